@@ -1,0 +1,135 @@
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "baker/direct_light.h"
+#include "baker/sampling.h"
+
+namespace radbake {
+namespace {
+
+struct Emitter {
+  uint32_t triangle;
+  Vec3 corner[3];
+  Vec3 normal;
+  bool uniform;
+  Rgb emission;  // lm/m2, exact when uniform
+};
+
+std::vector<Emitter> collect_emitters(const Surface& surface, const MaterialSampler& materials) {
+  std::vector<Emitter> out;
+  for (uint32_t t = 0; t < surface.triangle_count(); ++t) {
+    if (!materials.emits(t) || !(surface.area[t] > 0)) continue;
+    Emitter em{t, {surface.corners[3 * t], surface.corners[3 * t + 1], surface.corners[3 * t + 2]},
+               surface.normal[t], materials.is_uniform(t), materials.emission(t, {1.0f / 3, 1.0f / 3}, 1.0f)};
+    out.push_back(em);
+  }
+  return out;
+}
+
+// Clips the polygon to the half-space above the plane through x with normal n.
+int clip_to_hemisphere(Vec3 x, Vec3 n, const Vec3* in, int count, Vec3* out) {
+  int m = 0;
+  for (int i = 0; i < count; ++i) {
+    Vec3 a = in[i], b = in[(i + 1) % count];
+    float da = dot(n, a - x), db = dot(n, b - x);
+    if (da >= 0) out[m++] = a;
+    if ((da >= 0) != (db >= 0)) out[m++] = a + (b - a) * (da / (da - db));
+  }
+  return m;
+}
+
+// A point of a convex polygon (fanned from vertex 0) for a unit-square sample, uniform by area.
+Vec3 polygon_point(const Vec3* p, int count, Vec2 u) {
+  float areas[4] = {}, total = 0;
+  for (int k = 1; k + 1 < count; ++k) total += areas[k - 1] = length(cross(p[k] - p[0], p[k + 1] - p[0]));
+  float pick = u.x * total;
+  int k = 1;
+  while (k + 2 < count && pick > areas[k - 1]) pick -= areas[k - 1], ++k;
+  float ux = areas[k - 1] > 0 ? std::clamp(pick / areas[k - 1], 0.0f, 0.99999994f) : 0.0f;
+  Vec2 b = uniform_triangle({ux, u.y});
+  return p[0] * (1 - b.x - b.y) + p[k] * b.x + p[k + 1] * b.y;
+}
+
+Vec2 triangle_bary(const Emitter& em, Vec3 y) {
+  Vec3 e1 = em.corner[1] - em.corner[0], e2 = em.corner[2] - em.corner[0], d = y - em.corner[0];
+  float d11 = dot(e1, e1), d12 = dot(e1, e2), d22 = dot(e2, e2), d1 = dot(d, e1), d2 = dot(d, e2);
+  float det = d11 * d22 - d12 * d12;
+  if (det == 0) return {1.0f / 3, 1.0f / 3};
+  return {(d22 * d1 - d12 * d2) / det, (d11 * d2 - d12 * d1) / det};
+}
+
+}  // namespace
+
+double polygon_form_factor(Vec3 x, Vec3 n, const Vec3* polygon, int count) {
+  double sum = 0;
+  for (int i = 0; i < count; ++i) {
+    Vec3 a = normalize(polygon[i] - x), b = normalize(polygon[(i + 1) % count] - x);
+    Vec3 c = cross(a, b);
+    double len = length(c);
+    if (len < 1e-12) continue;
+    double angle = std::atan2(len, double(dot(a, b)));
+    sum += angle * double(dot(n, c)) / len;
+  }
+  return std::fabs(sum) / (2.0 * 3.14159265358979323846);
+}
+
+std::vector<Rgb> emitter_irradiance(const Elements& e, const Surface& surface, const MaterialSampler& materials,
+                                    const RayTracer& tracer, const DirectLightOptions& options, uint64_t seed,
+                                    Progress& progress) {
+  std::vector<Rgb> irradiance(e.size());
+  const std::vector<Emitter> emitters = collect_emitters(surface, materials);
+  if (emitters.empty()) return irradiance;
+  // Rays are shared out among the emitters by their unoccluded contribution, so a hundred small
+  // emitting triangles cost about what one bright one does.
+  const int budget = 2 * std::max(1, options.area_light_rays);
+  progress.begin("area lights", e.size());
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, e.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
+    std::vector<double> factor(emitters.size());
+    std::vector<std::array<Vec3, 4>> clipped(emitters.size());
+    std::vector<int> clipped_count(emitters.size());
+    for (size_t i = r.begin(); i < r.end(); ++i) {
+      if (!e.valid(i)) continue;
+      const Vec3 x = e.position[i], n = e.normal[i], ng = surface.normal[e.triangle[i]];
+      double total = 0;
+      for (size_t k = 0; k < emitters.size(); ++k) {
+        const Emitter& em = emitters[k];
+        factor[k] = 0;
+        if (em.triangle == e.triangle[i] || dot(x - em.corner[0], em.normal) <= 0) continue;
+        clipped_count[k] = clip_to_hemisphere(x, n, em.corner, 3, clipped[k].data());
+        if (clipped_count[k] < 3) continue;
+        factor[k] = polygon_form_factor(x, n, clipped[k].data(), clipped_count[k]);
+        total += factor[k] * sum(em.emission);
+      }
+      if (total <= 0) continue;
+      Rng rng(seed, Stream::AreaLight, i);
+      Rgb h{};
+      for (size_t k = 0; k < emitters.size(); ++k) {
+        if (factor[k] <= 0) continue;
+        const Emitter& em = emitters[k];
+        double share = factor[k] * sum(em.emission) / total;
+        int rays = std::clamp(int(std::ceil(budget * share)), 1, options.area_light_rays);
+        uint32_t target_pattern = rng.next_u32(), origin_pattern = rng.next_u32();
+        Rgb visible{};
+        for (int j = 0; j < rays; ++j) {
+          Vec3 y = polygon_point(clipped[k].data(), clipped_count[k], cmj_sample(uint32_t(j), uint32_t(rays), target_pattern));
+          Vec3 origin = footprint_point(e, surface, i, cmj_sample(uint32_t(j), uint32_t(rays), origin_pattern)) + ng * e.offset[i];
+          Vec3 d = y - origin;
+          float dist = length(d);
+          if (!(dist > 0) || dot(d, ng) <= 0) continue;
+          if (tracer.occluded(origin, d / dist, 0.0f, dist * (1 - 1e-4f))) continue;
+          visible += em.uniform ? em.emission : materials.emission(em.triangle, triangle_bary(em, y), 1.0f);
+        }
+        h += visible * float(factor[k] / rays);
+      }
+      irradiance[i] = h;
+    }
+    progress.advance(r.size());
+  });
+  progress.end();
+  return irradiance;
+}
+
+}  // namespace radbake

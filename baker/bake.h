@@ -1,0 +1,73 @@
+// The bake pipeline over plain data: scene and atlas in, lightmap pages and vertex values out.
+// Each stage is its own function (see DESIGN.md); this file only runs them in order and times them.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "baker/direct_light.h"
+#include "baker/elements.h"
+#include "baker/energy_balance.h"
+#include "baker/finish.h"
+#include "baker/patches.h"
+#include "baker/progress.h"
+#include "baker/scene.h"
+#include "baker/solve_radiosity.h"
+#include "uv/atlas.h"
+
+namespace radbake {
+
+// What a lightmap texel and a COLOR_0 value hold.
+enum class StoredQuantity {
+  Irradiance,  // lux (lm/m2 arriving): what a light meter lying on the surface reads
+  Radiosity,   // lm/m2 leaving: emission plus reflected light
+};
+
+struct BakeOptions {
+  ElementOptions elements;
+  PatchOptions patches;
+  DirectLightOptions direct;
+  SolveOptions solve;
+  uint32_t patch_rays = 2048;   // rays per patch for the form factors
+  uint32_t gather_rays = 256;   // hemisphere rays per texel for indirect light
+  uint64_t seed = 1;            // same seed, same input: bit-identical output, whatever the thread count
+  int threads = 0;              // 0: all cores
+  StoredQuantity store = StoredQuantity::Irradiance;
+};
+
+struct StageTime {
+  std::string stage;
+  double seconds = 0;
+};
+
+struct BakeReport {
+  size_t page_texels = 0, elements = 0, valid_elements = 0, buried_elements = 0, moved_samples = 0;
+  size_t patches = 0;
+  int patch_block_size = 0;
+  uint64_t rays = 0;
+  std::vector<StageTime> stage_times;
+  size_t solver_iterations = 0;
+  double unshot_relative = 0;  // unshot power / power the direct light brings in
+  bool converged = false;
+  Rgb ambient{};
+  EnergyBalance balance;
+  double gather_back_face_fraction = 0;
+  std::vector<std::string> warnings;
+};
+
+struct BakeResult {
+  std::vector<LightmapPage> pages;                 // the stored quantity per texel
+  std::vector<std::vector<Rgb>> vertex_values;     // per instance, per atlas output vertex
+  Elements elements;                               // kept for reports, tests and debug dumps
+  std::vector<Rgb> irradiance;                     // per element, lux
+  std::vector<Rgb> punctual, area_lights, indirect;  // its parts, lux
+  std::vector<uint32_t> patch_of_element;          // UINT32_MAX for buried elements
+  BakeReport report;
+};
+
+// Throws InputError when nothing in the scene emits light, Cancelled when the callback says so.
+BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& options,
+                const ProgressCallback& on_progress = {});
+
+}  // namespace radbake

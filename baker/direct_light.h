@@ -1,0 +1,39 @@
+// Direct irradiance at every element, in lux: from KHR_lights_punctual lights with shadow rays,
+// and from emitting surfaces as area lights (exact unoccluded form factor to each emitting
+// triangle, times the visible fraction measured with stratified shadow rays).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "baker/elements.h"
+#include "baker/material_sampler.h"
+#include "baker/progress.h"
+#include "baker/ray_tracer.h"
+#include "baker/scene.h"
+
+namespace radbake {
+
+struct DirectLightOptions {
+  int punctual_rays = 4;    // shadow rays per element per light, spread over the texel footprint
+  int area_light_rays = 16; // shadow rays per element per emitting triangle, at most
+};
+
+std::vector<Rgb> punctual_irradiance(const Elements& elements, const Surface& surface,
+                                     const std::vector<Light>& lights, const RayTracer& tracer,
+                                     const DirectLightOptions& options, uint64_t seed, Progress& progress);
+
+std::vector<Rgb> emitter_irradiance(const Elements& elements, const Surface& surface, const MaterialSampler& materials,
+                                    const RayTracer& tracer, const DirectLightOptions& options, uint64_t seed,
+                                    Progress& progress);
+
+// Irradiance at point x (unit normal n) from a Lambertian polygon of unit exitance, unoccluded:
+// the point-to-polygon form factor by Lambert's contour integral. The polygon must lie on the
+// side of x's tangent plane that n points to.
+double polygon_form_factor(Vec3 x, Vec3 n, const Vec3* polygon, int count);
+
+// Unoccluded irradiance in lux from a punctual light of the given kind, ignoring shadows: the
+// closed forms the tests compare against (inverse square, cosine, spot cone, range window).
+Rgb punctual_light_irradiance(const Light& light, Vec3 x, Vec3 n, Vec3* to_light, float* distance);
+
+}  // namespace radbake

@@ -1,0 +1,68 @@
+// Elements are the lightmap texels the surface covers: the receivers of the radiosity solution,
+// each with a sample point on the surface, a normal, its share of surface area and its material.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "baker/material_sampler.h"
+#include "baker/math.h"
+#include "baker/progress.h"
+#include "baker/surface.h"
+
+namespace radbake {
+
+class RayTracer;
+
+enum ElementFlags : uint8_t {
+  kPushedOut = 1,     // the texel centre was behind nearby geometry; the sample moved in front of it
+  kNearGeometry = 2,  // other geometry crosses the footprint: rays start only where the sample sees
+  kBuried = 4,        // the sample sees mostly back faces: it is inside geometry, valued by dilation
+};
+
+struct Elements {
+  // One entry per element, in page, row, column order.
+  std::vector<Vec3> position;     // sample point on the surface, world space
+  std::vector<Vec3> normal;       // unit shading normal at the sample
+  std::vector<float> area;        // m^2 of surface inside the texel
+  std::vector<Rgb> reflectance;   // diffuse, averaged over the texel's footprint
+  std::vector<Rgb> emission;      // exitance, lm/m2, averaged over the footprint
+  std::vector<uint32_t> triangle; // the triangle holding the sample
+  std::vector<uint32_t> page;
+  std::vector<uint32_t> texel;    // y * page width + x
+  std::vector<uint8_t> flags;
+  std::vector<float> offset;      // metres: how far rays start above the surface to avoid self-hits
+  // For elements near geometry: which cells of a 4 x 4 grid over the texel the sample point sees
+  // along the surface (bit 4 * row + column); rays start only from those. All ones elsewhere.
+  std::vector<uint16_t> visible_cells;
+  // Per page, texel -> element index or -1.
+  std::vector<std::vector<int32_t>> element_at;
+
+  size_t size() const { return area.size(); }
+  bool valid(size_t i) const { return !(flags[i] & kBuried); }
+};
+
+struct ElementOptions {
+  int footprint_samples = 4;  // per side: footprint_samples^2 material samples per textured texel
+};
+
+// Rasterises every triangle into its page and makes one element per covered texel.
+Elements build_elements(const Surface& surface, const MaterialSampler& materials, const ElementOptions& options,
+                        Progress& progress);
+
+// Moves samples that sit behind nearby geometry (a floor texel straddling a wall) to its front,
+// and flags samples buried inside closed geometry, so neither leaks light nor shadow.
+void place_samples(Elements& elements, const Surface& surface, const RayTracer& tracer, uint64_t seed,
+                   Progress& progress);
+
+// The element whose texel holds point `bary` of `triangle` (buried ones included), or -1.
+int64_t element_at_point(const Elements& elements, const Surface& surface, uint32_t triangle, Vec2 bary);
+
+// The surface point of the element's triangle at sub-texel position u in [0,1)^2, if it has one.
+bool footprint_surface_point(const Elements& elements, const Surface& surface, size_t element, Vec2 u, Vec3& point);
+
+// A point of the element's footprint for sub-texel sample u in [0,1)^2: on the element's triangle
+// in a cell the sample point sees, else the sample point itself.
+Vec3 footprint_point(const Elements& elements, const Surface& surface, size_t element, Vec2 u);
+
+}  // namespace radbake

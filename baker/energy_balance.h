@@ -1,0 +1,27 @@
+// Where the light went: everything the lights put into the scene must be absorbed by surfaces or
+// leave it. The terms come from independent estimates (texel-level direct and gathered light on
+// one side, patch-level ray counts on the other), so their mismatch measures the solution's error.
+#pragma once
+
+#include <vector>
+
+#include "baker/elements.h"
+#include "baker/patch_transport.h"
+#include "baker/patches.h"
+
+namespace radbake {
+
+// Powers in lumens, the mean of the RGB channels.
+struct EnergyBalance {
+  double emitted = 0;   // by emitting surfaces, plus what punctual lights deliver onto surfaces
+  double absorbed = 0;  // by front faces: (1 - rho) * irradiance * area over all elements
+  double escaped = 0;   // left the scene
+  double lost = 0;      // struck back faces or texels buried inside geometry (treated as black)
+  double relative_error = 0;  // (emitted - absorbed - escaped - lost) / emitted
+};
+
+EnergyBalance energy_balance(const Elements& elements, const Patches& patches, const PatchTransport& transport,
+                             const std::vector<Rgb>& patch_reflected_exitance, const std::vector<Rgb>& punctual,
+                             const std::vector<Rgb>& irradiance);
+
+}  // namespace radbake

@@ -1,0 +1,163 @@
+#include "baker/material_sampler.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace radbake {
+namespace {
+
+// Reflectance is an average over each lightmap texel's footprint, so texture detail finer than
+// this never changes a bake; capping the finest level bounds the memory a 8k texture costs.
+constexpr int kMaxSampledSize = 1024;
+
+float srgb_to_linear(float c) {
+  return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+}
+
+int wrap_index(int i, int n, Wrap mode) {
+  switch (mode) {
+    case Wrap::ClampToEdge:
+      return std::clamp(i, 0, n - 1);
+    case Wrap::MirroredRepeat: {
+      int period = 2 * n;
+      int m = ((i % period) + period) % period;
+      return m < n ? m : period - 1 - m;
+    }
+    case Wrap::Repeat:
+    default:
+      return ((i % n) + n) % n;
+  }
+}
+
+Vec2 apply_transform(const TextureTransform& t, Vec2 uv) {
+  Vec2 s{uv.x * t.scale.x, uv.y * t.scale.y};
+  float c = std::cos(t.rotation), r = std::sin(t.rotation);
+  // KHR_texture_transform: translation * rotation * scale, rotation = mat3(cos, sin, 0, -sin, cos, 0, ...)
+  return {c * s.x - r * s.y + t.offset.x, r * s.x + c * s.y + t.offset.y};
+}
+
+}  // namespace
+
+MaterialSampler::MaterialSampler(const Scene& scene, const Surface& surface) : scene_(scene), surface_(surface) {
+  for (const Material& m : scene.materials) {
+    base_texture_.push_back(m.base_color_texture.present() ? texture_for(m.base_color_texture.image, Decode::Srgb) : -1);
+    metallic_texture_.push_back(
+        m.metallic_roughness_texture.present() ? texture_for(m.metallic_roughness_texture.image, Decode::Linear) : -1);
+    emissive_texture_.push_back(m.emissive_texture.present() ? texture_for(m.emissive_texture.image, Decode::Srgb) : -1);
+  }
+}
+
+int MaterialSampler::texture_for(int image_index, Decode decode) {
+  auto known = texture_of_image_.find({image_index, decode});
+  if (known != texture_of_image_.end()) return known->second;
+  const Image& image = scene_.images[size_t(image_index)];
+  Texture tex;
+  // Finest level: the image box-filtered by a whole factor until it fits kMaxSampledSize.
+  int factor = std::max(1, std::max((image.width + kMaxSampledSize - 1) / kMaxSampledSize,
+                                    (image.height + kMaxSampledSize - 1) / kMaxSampledSize));
+  Level top{std::max(1, image.width / factor), std::max(1, image.height / factor), {}};
+  top.texels.assign(size_t(top.width) * top.height, Vec3{});
+  for (int y = 0; y < top.height; ++y)
+    for (int x = 0; x < top.width; ++x) {
+      Vec3 acc{};
+      for (int dy = 0; dy < factor; ++dy)
+        for (int dx = 0; dx < factor; ++dx) {
+          int sx = std::min(image.width - 1, x * factor + dx), sy = std::min(image.height - 1, y * factor + dy);
+          for (int c = 0; c < 3; ++c) {
+            float v = image.channel(sx, sy, c);
+            acc[c] += decode == Decode::Srgb ? srgb_to_linear(v) : v;
+          }
+        }
+      top.texels[size_t(y) * top.width + x] = acc / float(factor * factor);
+    }
+  tex.levels.push_back(std::move(top));
+  while (tex.levels.back().width > 1 || tex.levels.back().height > 1) {
+    const Level& fine = tex.levels.back();
+    Level coarse{std::max(1, fine.width / 2), std::max(1, fine.height / 2), {}};
+    coarse.texels.resize(size_t(coarse.width) * coarse.height);
+    for (int y = 0; y < coarse.height; ++y)
+      for (int x = 0; x < coarse.width; ++x) {
+        Vec3 acc{};
+        for (int k = 0; k < 4; ++k) {
+          int sx = std::min(fine.width - 1, 2 * x + (k & 1)), sy = std::min(fine.height - 1, 2 * y + (k >> 1));
+          acc += fine.texels[size_t(sy) * fine.width + sx];
+        }
+        coarse.texels[size_t(y) * coarse.width + x] = acc * 0.25f;
+      }
+    tex.levels.push_back(std::move(coarse));
+  }
+  textures_.push_back(std::move(tex));
+  return texture_of_image_[{image_index, decode}] = int(textures_.size() - 1);
+}
+
+Vec3 MaterialSampler::sample(const TextureRef& ref, int texture, uint32_t triangle, Vec2 bary, float spacing) const {
+  const MeshInstance& inst = scene_.instances[surface_.instance[triangle]];
+  if (size_t(ref.tex_coord) >= inst.texcoords.size() || inst.texcoords[size_t(ref.tex_coord)].empty())
+    return {1, 1, 1};  // io/ reports the missing set; a neutral texel keeps the factor's colour
+  const std::vector<Vec2>& set = inst.texcoords[size_t(ref.tex_coord)];
+  Vec2 uv[3];
+  for (int k = 0; k < 3; ++k) uv[k] = apply_transform(ref.transform, set[surface_.corner_vertex[3 * triangle + k]]);
+  Vec2 p = uv[0] * (1 - bary.x - bary.y) + uv[1] * bary.x + uv[2] * bary.y;
+
+  const Texture& tex = textures_[size_t(texture)];
+  const Level& finest = tex.levels.front();
+  // Texture texels per lightmap texel, from the two parameterisations' area ratio.
+  const Vec2* lm = &surface_.corner_lightmap[3 * triangle];
+  float lm_area = std::fabs(cross2(lm[1] - lm[0], lm[2] - lm[0]));
+  float uv_area = std::fabs(cross2(uv[1] - uv[0], uv[2] - uv[0])) * float(finest.width) * float(finest.height);
+  float footprint = lm_area > 0 ? spacing * std::sqrt(uv_area / lm_area) : 1.0f;
+  int level = footprint > 1 ? std::min(int(tex.levels.size()) - 1, int(std::log2(footprint))) : 0;
+  const Level& L = tex.levels[size_t(level)];
+
+  float fx = p.x * L.width - 0.5f, fy = p.y * L.height - 0.5f;
+  if (!std::isfinite(fx) || !std::isfinite(fy)) return {1, 1, 1};
+  int x0 = int(std::floor(fx)), y0 = int(std::floor(fy));
+  float tx = fx - x0, ty = fy - y0;
+  auto at = [&](int x, int y) {
+    return L.texels[size_t(wrap_index(y, L.height, ref.wrap_t)) * L.width + size_t(wrap_index(x, L.width, ref.wrap_s))];
+  };
+  return (at(x0, y0) * (1 - tx) + at(x0 + 1, y0) * tx) * (1 - ty) + (at(x0, y0 + 1) * (1 - tx) + at(x0 + 1, y0 + 1) * tx) * ty;
+}
+
+Rgb MaterialSampler::reflectance(uint32_t triangle, Vec2 bary, float spacing) const {
+  int mi = surface_.material[triangle];
+  const Material& m = material_of(scene_, mi);
+  Rgb albedo = m.base_color;
+  float metallic = m.metallic;
+  if (mi >= 0 && base_texture_[size_t(mi)] >= 0)
+    albedo = albedo * sample(m.base_color_texture, base_texture_[size_t(mi)], triangle, bary, spacing);
+  if (mi >= 0 && metallic_texture_[size_t(mi)] >= 0)
+    metallic *= sample(m.metallic_roughness_texture, metallic_texture_[size_t(mi)], triangle, bary, spacing).z;
+  const MeshInstance& inst = scene_.instances[surface_.instance[triangle]];
+  if (!inst.colors.empty()) {
+    const uint32_t* v = &surface_.corner_vertex[3 * triangle];
+    albedo = albedo * (inst.colors[v[0]] * (1 - bary.x - bary.y) + inst.colors[v[1]] * bary.x + inst.colors[v[2]] * bary.y);
+  }
+  Rgb rho = albedo * std::clamp(1.0f - metallic, 0.0f, 1.0f);
+  for (int c = 0; c < 3; ++c) rho[c] = std::clamp(std::isfinite(rho[c]) ? rho[c] : 0.0f, 0.0f, kMaxReflectance);
+  return rho;
+}
+
+Rgb MaterialSampler::emission(uint32_t triangle, Vec2 bary, float spacing) const {
+  int mi = surface_.material[triangle];
+  const Material& m = material_of(scene_, mi);
+  if (!m.emits()) return {0, 0, 0};
+  Rgb e = m.emissive * (m.emissive_strength * kExitancePerEmissiveUnit);
+  if (mi >= 0 && emissive_texture_[size_t(mi)] >= 0)
+    e = e * sample(m.emissive_texture, emissive_texture_[size_t(mi)], triangle, bary, spacing);
+  return e;
+}
+
+bool MaterialSampler::is_uniform(uint32_t triangle) const {
+  int mi = surface_.material[triangle];
+  if (!scene_.instances[surface_.instance[triangle]].colors.empty()) return false;
+  return mi < 0 || (base_texture_[size_t(mi)] < 0 && metallic_texture_[size_t(mi)] < 0 && emissive_texture_[size_t(mi)] < 0);
+}
+
+bool MaterialSampler::emits(uint32_t triangle) const { return material_of(scene_, surface_.material[triangle]).emits(); }
+
+bool MaterialSampler::double_sided(uint32_t triangle) const {
+  return material_of(scene_, surface_.material[triangle]).double_sided;
+}
+
+}  // namespace radbake

@@ -1,0 +1,59 @@
+// The glTF metallic-roughness material reduced to what diffuse radiosity needs: diffuse
+// reflectance and emitted exitance at a point of the surface, with textures box-filtered over the
+// area a sample stands for.
+#pragma once
+
+#include <map>
+#include <utility>
+#include <vector>
+
+#include "baker/math.h"
+#include "baker/scene.h"
+#include "baker/surface.h"
+
+namespace radbake {
+
+// radbake reads glTF emission (emissiveFactor x emissiveTexture x emissive_strength) as luminance
+// in cd/m2, as three.js and Filament do when lights are in candela and lux. A Lambertian emitter
+// of luminance L has exitance pi * L lm/m2.
+constexpr float kExitancePerEmissiveUnit = 3.14159265358979323846f;
+
+// Reflectance above this is clamped: a closed room of reflectance 1 has no steady state.
+constexpr float kMaxReflectance = 0.999f;
+
+class MaterialSampler {
+ public:
+  MaterialSampler(const Scene& scene, const Surface& surface);
+
+  // `spacing` is the distance, in lightmap texels, between neighbouring samples of the caller; it
+  // chooses the texture mip level so that each sample averages its share of the footprint.
+  Rgb reflectance(uint32_t triangle, Vec2 bary, float spacing) const;
+  Rgb emission(uint32_t triangle, Vec2 bary, float spacing) const;  // exitance, lm/m2
+
+  // True when neither reflectance nor emission varies over the triangle (no textures, no COLOR_0).
+  bool is_uniform(uint32_t triangle) const;
+  bool emits(uint32_t triangle) const;
+  bool double_sided(uint32_t triangle) const;
+
+ private:
+  struct Level {
+    int width, height;
+    std::vector<Vec3> texels;
+  };
+  struct Texture {
+    std::vector<Level> levels;  // finest first, at most kMaxSampledSize per side
+  };
+  enum class Decode { Srgb, Linear };
+
+  int texture_for(int image, Decode decode);
+  Vec3 sample(const TextureRef& ref, int texture, uint32_t triangle, Vec2 bary, float spacing) const;
+
+  const Scene& scene_;
+  const Surface& surface_;
+  std::vector<Texture> textures_;
+  std::map<std::pair<int, Decode>, int> texture_of_image_;  // (image, decoding) -> textures_
+  // Per material: index into textures_ for base colour, metallic, emission (-1 when absent).
+  std::vector<int> base_texture_, metallic_texture_, emissive_texture_;
+};
+
+}  // namespace radbake

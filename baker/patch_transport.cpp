@@ -1,0 +1,107 @@
+#include "baker/patch_transport.h"
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+
+#include "baker/sampling.h"
+
+namespace radbake {
+
+uint32_t patch_hit(const Elements& elements, const Patches& patches, const Surface& surface,
+                   const RayTracer& tracer, Vec3 origin, Vec3 direction, bool& escaped) {
+  Hit hit = tracer.intersect(origin, direction, 0.0f, INFINITY);
+  escaped = hit.missed();
+  if (escaped || !hit.front) return UINT32_MAX;
+  int64_t element = element_at_point(elements, surface, hit.triangle, hit.bary);
+  return element < 0 ? UINT32_MAX : patches.patch_of_element[size_t(element)];
+}
+
+PatchTransport trace_patch_transport(const Elements& elements, const Patches& patches, const Surface& surface,
+                                     const RayTracer& tracer, uint32_t rays_per_patch,
+                                     const std::vector<double>& power, uint64_t seed, Progress& progress) {
+  const size_t patch_count = patches.size();
+  std::vector<std::vector<std::pair<uint32_t, float>>> rows(patch_count);
+  PatchTransport out;
+  out.escaped.assign(patch_count, 0);
+  out.lost.assign(patch_count, 0);
+  out.rays.assign(patch_count, rays_per_patch);
+  double total_power = 0;
+  for (double p : power) total_power += p;
+  if (total_power > 0)
+    for (size_t p = 0; p < patch_count; ++p) {
+      double extra = double(rays_per_patch) * double(patch_count) * power[p] / total_power;
+      out.rays[p] = uint32_t(std::min<double>(16.0 * rays_per_patch, rays_per_patch + std::round(extra)));
+    }
+
+  struct Scratch {
+    std::vector<uint32_t> count;
+    std::vector<uint32_t> touched;
+    std::vector<double> cumulative_area;
+  };
+  tbb::enumerable_thread_specific<Scratch> scratch;
+  progress.begin("form factors", patch_count);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, patch_count, 8), [&](const tbb::blocked_range<size_t>& r) {
+    Scratch& s = scratch.local();
+    if (s.count.size() != patch_count) s.count.assign(patch_count, 0);
+    for (size_t p = r.begin(); p < r.end(); ++p) {
+      const uint32_t* first = &patches.members[patches.first_member[p]];
+      const size_t member_count = patches.first_member[p + 1] - patches.first_member[p];
+      s.cumulative_area.resize(member_count);
+      double total = 0;
+      for (size_t m = 0; m < member_count; ++m) s.cumulative_area[m] = total += elements.area[first[m]];
+
+      const uint32_t rays = out.rays[p];
+      Rng rng(seed, Stream::PatchRays, p);
+      const uint32_t origin_pattern = rng.next_u32(), direction_pattern = rng.next_u32();
+      uint32_t escaped = 0, lost = 0;
+      for (uint32_t k = 0; k < rays; ++k) {
+        // Stratified over the patch's area, then within the chosen element's footprint.
+        double pick = (k + rng.uniform()) / rays * total;
+        size_t m = size_t(std::lower_bound(s.cumulative_area.begin(), s.cumulative_area.end(), pick) -
+                          s.cumulative_area.begin());
+        const uint32_t i = first[std::min(m, member_count - 1)];
+        const Vec3 ng = surface.normal[elements.triangle[i]];
+        Vec3 origin = footprint_point(elements, surface, i, cmj_sample(k, rays, origin_pattern));
+        origin += ng * elements.offset[i];
+        Vec3 dir = hemisphere_direction(elements.normal[i], ng, cmj_sample(k, rays, direction_pattern));
+        bool left;
+        uint32_t q = patch_hit(elements, patches, surface, tracer, origin, dir, left);
+        if (q == UINT32_MAX) {
+          escaped += left;
+          lost += !left;
+          continue;
+        }
+        if (s.count[q]++ == 0) s.touched.push_back(q);
+      }
+      std::sort(s.touched.begin(), s.touched.end());
+      auto& row = rows[p];
+      row.reserve(s.touched.size());
+      for (uint32_t q : s.touched) {
+        row.emplace_back(q, float(s.count[q]) / float(rays));
+        s.count[q] = 0;
+      }
+      s.touched.clear();
+      out.escaped[p] = float(escaped) / float(rays);
+      out.lost[p] = float(lost) / float(rays);
+    }
+    progress.advance(r.size());
+  });
+  progress.end();
+
+  out.row_start.assign(patch_count + 1, 0);
+  for (size_t p = 0; p < patch_count; ++p) out.row_start[p + 1] = out.row_start[p] + rows[p].size();
+  out.target.reserve(out.row_start.back());
+  out.form_factor.reserve(out.row_start.back());
+  for (auto& row : rows) {
+    for (auto [q, f] : row) {
+      out.target.push_back(q);
+      out.form_factor.push_back(f);
+    }
+    row = {};
+  }
+  return out;
+}
+
+}  // namespace radbake

@@ -1,0 +1,39 @@
+// Form factors between patches by Embree ray casting: from each patch, cosine-distributed rays
+// from points spread over its area; the share landing on patch q is the form factor F(p -> q).
+// Every ray lands somewhere or leaves the scene, so each row sums to one exactly: what the
+// furnace test and the energy balance rely on.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "baker/elements.h"
+#include "baker/patches.h"
+#include "baker/progress.h"
+#include "baker/ray_tracer.h"
+
+namespace radbake {
+
+struct PatchTransport {
+  // Row p in compressed form: targets[row_start[p] .. row_start[p + 1]) with their form factors.
+  std::vector<uint64_t> row_start;
+  std::vector<uint32_t> target;
+  std::vector<float> form_factor;
+  std::vector<float> escaped;         // per patch: share of rays that left the scene
+  std::vector<float> lost;            // per patch: share that struck back faces or buried texels
+  std::vector<uint32_t> rays;         // per patch
+};
+
+// Every patch casts at least `rays_per_patch` rays; as many again are shared out in proportion to
+// `power` (lm leaving each patch on the first bounce), up to 16 times the base, so the patches
+// that carry the light are measured most finely.
+PatchTransport trace_patch_transport(const Elements& elements, const Patches& patches, const Surface& surface,
+                                     const RayTracer& tracer, uint32_t rays_per_patch,
+                                     const std::vector<double>& power, uint64_t seed, Progress& progress);
+
+// Where a ray from element `from` in `direction` lands: the patch it struck, or UINT32_MAX
+// with `escaped` telling whether it left the scene (else it struck a back face or buried texel).
+uint32_t patch_hit(const Elements& elements, const Patches& patches, const Surface& surface,
+                   const RayTracer& tracer, Vec3 origin, Vec3 direction, bool& escaped);
+
+}  // namespace radbake

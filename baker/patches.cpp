@@ -1,0 +1,73 @@
+#include "baker/patches.h"
+
+#include <algorithm>
+#include <numeric>
+
+namespace radbake {
+namespace {
+
+struct Keyed {
+  uint64_t key;  // chart, block row, block column
+  uint32_t element;
+};
+
+std::vector<Keyed> block_keys(const Elements& e, const Surface& surface, int block) {
+  std::vector<Keyed> keys;
+  keys.reserve(e.size());
+  for (size_t i = 0; i < e.size(); ++i) {
+    if (!e.valid(i)) continue;
+    uint32_t width = uint32_t(surface.pages[e.page[i]].width);
+    uint64_t bx = (e.texel[i] % width) / uint32_t(block), by = (e.texel[i] / width) / uint32_t(block);
+    keys.push_back({uint64_t(surface.chart[e.triangle[i]]) << 32 | by << 16 | bx, uint32_t(i)});
+  }
+  std::sort(keys.begin(), keys.end(), [](const Keyed& a, const Keyed& b) {
+    return a.key != b.key ? a.key < b.key : a.element < b.element;
+  });
+  return keys;
+}
+
+size_t distinct_keys(const std::vector<Keyed>& keys) {
+  size_t count = 0;
+  for (size_t i = 0; i < keys.size(); ++i) count += i == 0 || keys[i].key != keys[i - 1].key;
+  return count;
+}
+
+}  // namespace
+
+Patches build_patches(const Elements& e, const Surface& surface, const PatchOptions& options) {
+  int block = options.block_size > 0 ? options.block_size : 1;
+  std::vector<Keyed> keys = block_keys(e, surface, block);
+  // Pages are at most 16384 texels, so blocks stay under 2^16 per side in the key.
+  while (options.block_size <= 0 && distinct_keys(keys) > options.max_patches && block < 16384) {
+    block *= 2;
+    keys = block_keys(e, surface, block);
+  }
+
+  Patches p;
+  p.block_size = block;
+  p.patch_of_element.assign(e.size(), UINT32_MAX);
+  for (size_t i = 0; i < keys.size(); ++i) {
+    if (i == 0 || keys[i].key != keys[i - 1].key) {
+      p.first_member.push_back(uint32_t(i));
+      p.area.push_back(0);
+      p.reflectance.push_back({});
+      p.emission.push_back({});
+    }
+    uint32_t el = keys[i].element;
+    size_t patch = p.area.size() - 1;
+    p.members.push_back(el);
+    p.patch_of_element[el] = uint32_t(patch);
+    p.area[patch] += e.area[el];
+    p.reflectance[patch] += e.reflectance[el] * e.area[el];
+    p.emission[patch] += e.emission[el] * e.area[el];
+  }
+  p.first_member.push_back(uint32_t(keys.size()));
+  for (size_t q = 0; q < p.size(); ++q) {
+    float inv = p.area[q] > 0 ? 1.0f / p.area[q] : 0.0f;
+    p.reflectance[q] *= inv;
+    p.emission[q] *= inv;
+  }
+  return p;
+}
+
+}  // namespace radbake

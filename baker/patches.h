@@ -1,0 +1,32 @@
+// Patches group neighbouring elements of one chart into square blocks of texels: they are the
+// sources of the interreflection solve, while elements keep texel resolution as receivers.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "baker/elements.h"
+#include "baker/math.h"
+
+namespace radbake {
+
+struct Patches {
+  std::vector<uint32_t> first_member;  // members of patch p: members[first_member[p] .. first_member[p + 1])
+  std::vector<uint32_t> members;       // element indices
+  std::vector<float> area;             // m^2
+  std::vector<Rgb> reflectance;        // area-weighted mean of the members
+  std::vector<Rgb> emission;           // area-weighted mean exitance, lm/m2
+  std::vector<uint32_t> patch_of_element;  // UINT32_MAX for buried elements
+  int block_size = 1;                  // texels per side
+
+  size_t size() const { return area.size(); }
+};
+
+struct PatchOptions {
+  int block_size = 0;        // texels per patch side; 0 picks the smallest power of two that keeps
+  size_t max_patches = 4096;  // the patch count at or under this
+};
+
+Patches build_patches(const Elements& elements, const Surface& surface, const PatchOptions& options);
+
+}  // namespace radbake

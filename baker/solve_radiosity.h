@@ -1,0 +1,42 @@
+// The radiosity equation at patch level for reflected light: B_p = rho_p (D_p + sum_q F_pq B_q),
+// with D_p the direct irradiance (from lights and emitting surfaces) and F the ray-cast transport.
+// Solved by progressive shooting (Cohen et al. 1988) or by Jacobi / Gauss-Seidel gathering; all
+// stop when the unshot energy falls under a tolerance, never after a fixed number of bounces.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "baker/math.h"
+#include "baker/patch_transport.h"
+#include "baker/patches.h"
+#include "baker/progress.h"
+
+namespace radbake {
+
+enum class Solver { Shooting, GaussSeidel, Jacobi };
+
+struct SolveOptions {
+  Solver solver = Solver::Shooting;
+  double tolerance = 1e-3;  // stop when unshot power <= tolerance * power brought in by the lights
+  bool ambient_term = true; // add Cohen's ambient estimate of the light still unshot to the result
+  // A guard against a solve that cannot converge (it never should with reflectance < 1); reaching
+  // it is reported as non-convergence, not passed off as a result.
+  size_t max_iterations = 50'000'000;
+};
+
+struct RadiositySolution {
+  std::vector<Rgb> exitance;   // reflected exitance per patch, lm/m2 (emission not included)
+  size_t iterations = 0;       // shots, or sweeps for the gathering solvers
+  double unshot_power = 0;     // lm (mean of the RGB channels) still to be distributed
+  double input_power = 0;      // lm (mean of the RGB channels) the direct light brings in
+  double relative_unshot = 0;  // unshot_power / input_power
+  bool converged = false;
+  Rgb ambient{};               // lm/m2 added through the ambient term
+};
+
+// `direct` is the area-weighted mean direct irradiance of each patch in lux.
+RadiositySolution solve_radiosity(const Patches& patches, const PatchTransport& transport,
+                                  const std::vector<Rgb>& direct, const SolveOptions& options, Progress& progress);
+
+}  // namespace radbake

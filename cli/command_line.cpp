@@ -1,0 +1,164 @@
+#include "cli/command_line.h"
+
+#include <cmath>
+#include <functional>
+#include <map>
+
+namespace radbake {
+namespace {
+
+double parse_number(const std::string& option, const std::string& text, double lo, double hi) {
+  size_t used = 0;
+  double v = 0;
+  try {
+    v = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != text.size() || !std::isfinite(v))
+    throw UsageError("option " + option + " needs a number, got '" + text + "'");
+  if (v < lo || v > hi)
+    throw UsageError("option " + option + " must be between " + std::to_string(lo) + " and " + std::to_string(hi));
+  return v;
+}
+
+long parse_integer(const std::string& option, const std::string& text, long lo, long hi) {
+  double v = parse_number(option, text, double(lo), double(hi));
+  if (v != std::floor(v)) throw UsageError("option " + option + " needs a whole number, got '" + text + "'");
+  return long(v);
+}
+
+}  // namespace
+
+const char* usage_text() {
+  return R"(usage: radbake bake SCENE.gltf|SCENE.glb -o OUTDIR [options]
+       radbake --help | --version
+
+Bakes diffuse global illumination (radiosity with colour bleeding) into lightmaps.
+OUTDIR receives NAME.gltf with lightmap UVs (TEXCOORD_1), baked COLOR_0 and MOZ_lightmap
+materials, the lightmap pages as NAME_lightmap_N.exr (linear) and .png (sRGB), and report.json.
+
+options:
+  -o, --output DIR        output folder (required); replaced only if it is an earlier radbake output
+  --density N             lightmap texels per metre (default: auto, fill one page)
+  --max-page-size N       texels per page side, 16..16384 (default 1024)
+  --padding N             empty texels between charts, 0..64 (default 2)
+  --tolerance X           stop when unshot light <= X of the light brought in (default 0.001)
+  --solver NAME           shooting | gauss-seidel | jacobi (default shooting)
+  --threads N             worker threads, 0 = all cores (default 0)
+  --seed N                random seed; same seed, same output (default 1)
+  --store WHAT            irradiance (lux) | radiosity (lm/m2) per texel and vertex (default irradiance)
+  --gather-rays N         hemisphere rays per texel for indirect light (default 256)
+  --patch-rays N          rays per patch for form factors (default 2048)
+  --area-light-rays N     shadow rays per texel per emitting triangle (default 16)
+  --light-rays N          shadow rays per texel per punctual light (default 4)
+  --patch-size N          patch side in texels, 0 = auto (default 0)
+  --png-scale X|auto      value (lux or lm/m2) that the PNG encodes as white (default auto)
+  --no-ambient            leave out the ambient estimate of the light still unshot
+  --debug-dumps           also write OUTDIR/debug/*.exr: light by source, material, normals,
+                          sample flags and patch layout, undilated
+  --quiet                 no progress and no warnings on stderr
+  -h, --help              this text
+  --version               print the version
+
+exit status: 0 done, 2 bad input or usage, 1 anything else
+)";
+}
+
+CommandLine parse_command_line(const std::vector<std::string>& args) {
+  CommandLine cl;
+  if (args.empty()) throw UsageError("missing command (try radbake --help)");
+  if (args[0] == "-h" || args[0] == "--help" || args[0] == "help") return cl;
+  if (args[0] == "--version") {
+    cl.action = Action::Version;
+    return cl;
+  }
+  if (args[0] != "bake") throw UsageError("unknown command '" + args[0] + "' (try radbake --help)");
+  cl.action = Action::Bake;
+  BakeCommand& b = cl.bake;
+
+  using Setter = std::function<void(const std::string&)>;
+  const std::map<std::string, Setter> with_value = {
+      {"--output", [&](const std::string& v) { b.output = v; }},
+      {"--density", [&](const std::string& v) { b.atlas.texel_density = float(parse_number("--density", v, 1e-6, 1e9)); }},
+      {"--max-page-size", [&](const std::string& v) { b.atlas.max_page_size = int(parse_integer("--max-page-size", v, 16, 16384)); }},
+      {"--padding", [&](const std::string& v) { b.atlas.padding = int(parse_integer("--padding", v, 0, 64)); }},
+      {"--tolerance", [&](const std::string& v) { b.bake.solve.tolerance = parse_number("--tolerance", v, 1e-9, 1); }},
+      {"--solver", [&](const std::string& v) {
+         if (v == "shooting") b.bake.solve.solver = Solver::Shooting;
+         else if (v == "gauss-seidel") b.bake.solve.solver = Solver::GaussSeidel;
+         else if (v == "jacobi") b.bake.solve.solver = Solver::Jacobi;
+         else throw UsageError("option --solver must be shooting, gauss-seidel or jacobi, got '" + v + "'");
+       }},
+      {"--threads", [&](const std::string& v) { b.bake.threads = int(parse_integer("--threads", v, 0, 1024)); }},
+      {"--seed", [&](const std::string& v) { b.bake.seed = uint64_t(parse_integer("--seed", v, 0, 1L << 53)); }},
+      {"--store", [&](const std::string& v) {
+         if (v == "irradiance") b.bake.store = StoredQuantity::Irradiance;
+         else if (v == "radiosity") b.bake.store = StoredQuantity::Radiosity;
+         else throw UsageError("option --store must be irradiance or radiosity, got '" + v + "'");
+       }},
+      {"--gather-rays", [&](const std::string& v) { b.bake.gather_rays = uint32_t(parse_integer("--gather-rays", v, 0, 1 << 20)); }},
+      {"--patch-rays", [&](const std::string& v) { b.bake.patch_rays = uint32_t(parse_integer("--patch-rays", v, 16, 1 << 24)); }},
+      {"--area-light-rays", [&](const std::string& v) { b.bake.direct.area_light_rays = int(parse_integer("--area-light-rays", v, 1, 1 << 16)); }},
+      {"--light-rays", [&](const std::string& v) { b.bake.direct.punctual_rays = int(parse_integer("--light-rays", v, 1, 1 << 16)); }},
+      {"--patch-size", [&](const std::string& v) { b.bake.patches.block_size = int(parse_integer("--patch-size", v, 0, 16384)); }},
+      {"--png-scale", [&](const std::string& v) { b.png_scale = v == "auto" ? 0.0f : float(parse_number("--png-scale", v, 1e-30, 1e30)); }},
+  };
+  std::map<std::string, std::string> given;
+  for (size_t i = 1; i < args.size(); ++i) {
+    std::string arg = args[i];
+    if (arg == "-h" || arg == "--help") {
+      cl.action = Action::Help;
+      return cl;
+    }
+    if (arg == "--quiet") { b.quiet = true; continue; }
+    if (arg == "--debug-dumps") { b.debug_dumps = true; continue; }
+    if (arg == "--no-ambient") { b.bake.solve.ambient_term = false; given["--no-ambient"] = "yes"; continue; }
+    if (arg.empty() || arg[0] != '-') {
+      if (!b.input.empty()) throw UsageError("unexpected argument '" + arg + "' (one scene per bake)");
+      b.input = arg;
+      continue;
+    }
+    std::string value;
+    bool inline_value = false;
+    if (arg == "-o") arg = "--output";
+    if (size_t eq = arg.find('='); arg.rfind("--", 0) == 0 && eq != std::string::npos) {
+      value = arg.substr(eq + 1);
+      arg = arg.substr(0, eq);
+      inline_value = true;
+    }
+    auto setter = with_value.find(arg);
+    if (setter == with_value.end()) throw UsageError("unknown option " + arg + " (see radbake --help)");
+    if (!inline_value) {
+      if (i + 1 >= args.size()) throw UsageError("option " + arg + " needs a value");
+      value = args[++i];
+    }
+    setter->second(value);
+    given[arg] = value;
+  }
+  if (b.input.empty()) throw UsageError("missing input scene (radbake bake SCENE.gltf -o OUTDIR)");
+  if (b.output.empty()) throw UsageError("missing -o OUTDIR");
+
+  auto show = [&](const char* key, std::string fallback) {
+    auto it = given.find(key);
+    b.effective.emplace_back(key + 2, it != given.end() ? it->second : fallback);
+  };
+  show("--density", "auto");
+  show("--max-page-size", std::to_string(b.atlas.max_page_size));
+  show("--padding", std::to_string(b.atlas.padding));
+  show("--tolerance", "0.001");
+  show("--solver", "shooting");
+  show("--threads", "0");
+  show("--seed", "1");
+  show("--store", "irradiance");
+  show("--gather-rays", std::to_string(b.bake.gather_rays));
+  show("--patch-rays", std::to_string(b.bake.patch_rays));
+  show("--area-light-rays", std::to_string(b.bake.direct.area_light_rays));
+  show("--light-rays", std::to_string(b.bake.direct.punctual_rays));
+  show("--patch-size", "0");
+  show("--png-scale", "auto");
+  show("--no-ambient", "no");
+  return cl;
+}
+
+}  // namespace radbake

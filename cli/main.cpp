@@ -1,0 +1,124 @@
+// radbake: a thin shell over the pipeline in DESIGN.md. Parse, load, unwrap, bake, write.
+#include <sys/resource.h>
+
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+
+#include "baker/bake.h"
+#include "baker/errors.h"
+#include "cli/command_line.h"
+#include "cli/progress_display.h"
+#include "io/debug_dumps.h"
+#include "io/gltf.h"
+#include "io/lightmap_images.h"
+#include "io/output_folder.h"
+#include "io/report.h"
+
+namespace {
+
+std::atomic<bool> interrupted{false};
+void on_interrupt(int) { interrupted = true; }
+
+size_t peak_memory_bytes() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return size_t(usage.ru_maxrss) * 1024;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+int run_bake(const radbake::BakeCommand& cmd) {
+  using namespace radbake;
+  const auto start = std::chrono::steady_clock::now();
+  RunInfo run;
+  run.input = cmd.input;
+  run.options = cmd.effective;
+
+  auto t = std::chrono::steady_clock::now();
+  LoadedScene loaded = load_gltf(cmd.input);
+  run.io_times.push_back({"load", seconds_since(t)});
+  StagedFolder folder(cmd.output);
+
+  t = std::chrono::steady_clock::now();
+  std::vector<MeshView> views;
+  for (const MeshInstance& inst : loaded.scene.instances) {
+    MeshView v;
+    v.positions = inst.positions.data();
+    v.vertex_count = inst.vertex_count();
+    v.triangles = inst.triangles.data();
+    v.triangle_count = inst.triangle_count();
+    v.lightmap_uvs = inst.lightmap_uvs() ? inst.lightmap_uvs()->data() : nullptr;
+    v.name = inst.name;
+    views.push_back(v);
+  }
+  Atlas atlas = ensure_lightmap_uvs(views, cmd.atlas);
+  run.io_times.push_back({"lightmap uvs", seconds_since(t)});
+
+  ProgressDisplay display(!cmd.quiet);
+  BakeResult result = bake(loaded.scene, atlas, cmd.bake, [&](const std::string& stage, double fraction) {
+    display.update(stage, fraction);
+    return !interrupted.load();
+  });
+  display.finish();
+
+  t = std::chrono::steady_clock::now();
+  const std::string name = std::filesystem::path(cmd.input).stem().string();
+  const bool irradiance = cmd.bake.store == StoredQuantity::Irradiance;
+  float scale = cmd.png_scale > 0 ? cmd.png_scale : automatic_png_scale(result.pages);
+  LightmapFiles files = write_lightmaps(result.pages, folder.path(), name, irradiance ? "irradiance" : "radiosity",
+                                        irradiance ? "lx" : "lm/m2", scale);
+  if (cmd.debug_dumps) write_debug_dumps(result, atlas.pages, folder.path(), name);
+  GltfOutput gltf = write_gltf(*loaded.source, loaded.scene, atlas, result.vertex_values, files, folder.path(), name);
+  run.io_times.push_back({"write", seconds_since(t)});
+
+  std::vector<std::string> warnings = loaded.scene.warnings;
+  warnings.insert(warnings.end(), atlas.warnings.begin(), atlas.warnings.end());
+  warnings.insert(warnings.end(), result.report.warnings.begin(), result.report.warnings.end());
+  warnings.insert(warnings.end(), gltf.warnings.begin(), gltf.warnings.end());
+  run.total_seconds = seconds_since(start);
+  run.peak_memory_bytes = peak_memory_bytes();
+  write_report((std::filesystem::path(folder.path()) / "report.json").string(), run, loaded.scene, atlas,
+               result.report, files, warnings);
+  folder.commit();
+
+  if (!cmd.quiet)
+    for (const std::string& w : warnings) std::fprintf(stderr, "radbake: warning: %s\n", w.c_str());
+  std::printf("radbake: wrote %s/%s (%zu page%s, %zu texels, energy balance %.3f%%, %.1f s)\n", cmd.output.c_str(),
+              gltf.gltf_file.c_str(), result.pages.size(), result.pages.size() == 1 ? "" : "s",
+              result.report.valid_elements, 100.0 * result.report.balance.relative_error, run.total_seconds);
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace radbake;
+  std::signal(SIGINT, on_interrupt);
+  std::signal(SIGTERM, on_interrupt);
+  try {
+    CommandLine cl = parse_command_line(std::vector<std::string>(argv + 1, argv + argc));
+    switch (cl.action) {
+      case Action::Help: std::fputs(usage_text(), stdout); return 0;
+      case Action::Version: std::puts("radbake 0.1.0"); return 0;
+      case Action::Bake: return run_bake(cl.bake);
+    }
+  } catch (const UsageError& e) {
+    std::fprintf(stderr, "radbake: error: %s\n", e.what());
+    return 2;
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "radbake: error: %s\n", e.what());
+    return 2;
+  } catch (const Cancelled&) {
+    std::fprintf(stderr, "\nradbake: cancelled; nothing was written\n");
+    return 1;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "radbake: error: %s\n", e.what());
+    return 1;
+  }
+  return 1;
+}

@@ -1,0 +1,398 @@
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "baker/errors.h"
+#include "io/gltf_source.h"
+
+namespace radbake {
+namespace {
+
+// Extensions radbake fully honours when a file marks them required.
+const std::set<std::string> kSupportedRequired = {"KHR_lights_punctual", "KHR_materials_emissive_strength",
+                                                  "KHR_texture_transform", "KHR_mesh_quantization"};
+
+std::string one_line(std::string text) {
+  std::replace(text.begin(), text.end(), '\n', ' ');
+  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.pop_back();
+  return text;
+}
+
+std::vector<uint8_t> read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": cannot open file");
+  return std::vector<uint8_t>(std::istreambuf_iterator<char>(in), {});
+}
+
+uint32_t read_u32(const std::vector<uint8_t>& b, size_t at) {
+  uint32_t v;
+  std::memcpy(&v, b.data() + at, 4);
+  return v;
+}
+
+// The JSON and BIN chunks of a .glb, kept so the writer can copy them untouched.
+void split_glb(const std::vector<uint8_t>& bytes, GltfSource& src) {
+  size_t at = 12;
+  while (at + 8 <= bytes.size()) {
+    uint32_t length = read_u32(bytes, at), type = read_u32(bytes, at + 4);
+    if (length > bytes.size() - at - 8) break;
+    if (type == 0x4E4F534Au) src.json_text.assign(bytes.begin() + long(at + 8), bytes.begin() + long(at + 8 + length));
+    if (type == 0x004E4942u && src.glb_bin.empty())
+      src.glb_bin.assign(bytes.begin() + long(at + 8), bytes.begin() + long(at + 8 + length));
+    at += 8 + ((length + 3) & ~3u);
+  }
+}
+
+Mat4 local_transform(const tinygltf::Node& node) {
+  Mat4 m;
+  if (node.matrix.size() == 16) {
+    for (int i = 0; i < 16; ++i) m.m[i] = node.matrix[size_t(i)];
+    return m;
+  }
+  double tx = 0, ty = 0, tz = 0, qx = 0, qy = 0, qz = 0, qw = 1, sx = 1, sy = 1, sz = 1;
+  if (node.translation.size() == 3) tx = node.translation[0], ty = node.translation[1], tz = node.translation[2];
+  if (node.rotation.size() == 4) qx = node.rotation[0], qy = node.rotation[1], qz = node.rotation[2], qw = node.rotation[3];
+  if (node.scale.size() == 3) sx = node.scale[0], sy = node.scale[1], sz = node.scale[2];
+  double r[9] = {1 - 2 * (qy * qy + qz * qz), 2 * (qx * qy + qz * qw),     2 * (qx * qz - qy * qw),
+                 2 * (qx * qy - qz * qw),     1 - 2 * (qx * qx + qz * qz), 2 * (qy * qz + qx * qw),
+                 2 * (qx * qz + qy * qw),     2 * (qy * qz - qx * qw),     1 - 2 * (qx * qx + qy * qy)};
+  double s[3] = {sx, sy, sz};
+  for (int col = 0; col < 3; ++col)
+    for (int row = 0; row < 3; ++row) m.m[col * 4 + row] = r[col * 3 + row] * s[col];
+  m.m[12] = tx, m.m[13] = ty, m.m[14] = tz;
+  return m;
+}
+
+double number(const tinygltf::Value& object, const char* key, double fallback) {
+  if (!object.IsObject() || !object.Has(key) || !object.Get(key).IsNumber()) return fallback;
+  return object.Get(key).GetNumberAsDouble();
+}
+
+Wrap wrap_mode(int gl) {
+  switch (gl) {
+    case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE: return Wrap::ClampToEdge;
+    case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT: return Wrap::MirroredRepeat;
+    default: return Wrap::Repeat;
+  }
+}
+
+class SceneBuilder {
+ public:
+  SceneBuilder(const tinygltf::Model& model, Scene& scene) : model_(model), scene_(scene) {}
+
+  void build() {
+    check_required_extensions();
+    convert_images();
+    convert_materials();
+    for (int root : scene_roots()) visit(root, Mat4{}, 0);
+    scene_.summary.nodes = model_.nodes.size();
+    scene_.summary.meshes = model_.meshes.size();
+    scene_.summary.materials = model_.materials.size();
+    scene_.summary.textures = model_.textures.size();
+    scene_.summary.lights = scene_.lights.size();
+    for (const MeshInstance& inst : scene_.instances) scene_.summary.triangles += inst.triangle_count();
+    if (scene_.summary.triangles == 0) throw InputError("the scene has no triangles to bake");
+  }
+
+ private:
+  void check_required_extensions() {
+    for (const std::string& ext : model_.extensionsRequired)
+      if (!kSupportedRequired.count(ext))
+        throw InputError("the file requires extension " + ext + ", which radbake does not support");
+  }
+
+  std::vector<int> scene_roots() const {
+    if (!model_.scenes.empty()) {
+      int s = model_.defaultScene >= 0 ? model_.defaultScene : 0;
+      if (size_t(s) >= model_.scenes.size()) throw InputError("the default scene " + std::to_string(s) + " does not exist");
+      return model_.scenes[size_t(s)].nodes;
+    }
+    // No scenes: every node that is nobody's child is a root.
+    std::vector<char> is_child(model_.nodes.size(), 0);
+    for (const tinygltf::Node& n : model_.nodes)
+      for (int c : n.children)
+        if (c >= 0 && size_t(c) < is_child.size()) is_child[size_t(c)] = 1;
+    std::vector<int> roots;
+    for (size_t i = 0; i < model_.nodes.size(); ++i)
+      if (!is_child[i]) roots.push_back(int(i));
+    return roots;
+  }
+
+  void visit(int index, const Mat4& parent, size_t depth) {
+    if (index < 0 || size_t(index) >= model_.nodes.size())
+      throw InputError("node " + std::to_string(index) + " does not exist");
+    if (depth > model_.nodes.size()) throw InputError("the node hierarchy contains a cycle");
+    const tinygltf::Node& node = model_.nodes[size_t(index)];
+    Mat4 world = parent * local_transform(node);
+    for (int i = 0; i < 16; ++i)
+      if (!std::isfinite(world.m[i])) throw InputError("node " + describe_node(index) + " has a non-finite transform");
+    if (node.mesh >= 0) add_mesh(index, world);
+    auto light = node.extensions.find("KHR_lights_punctual");
+    if (light != node.extensions.end() && light->second.Has("light"))
+      add_light(light->second.Get("light").GetNumberAsInt(), world);
+    for (int child : node.children) visit(child, world, depth + 1);
+  }
+
+  std::string describe_node(int index) const {
+    const std::string& name = model_.nodes[size_t(index)].name;
+    return name.empty() ? std::to_string(index) : "'" + name + "'";
+  }
+
+  void add_mesh(int node_index, const Mat4& world) {
+    const tinygltf::Node& node = model_.nodes[size_t(node_index)];
+    if (size_t(node.mesh) >= model_.meshes.size()) throw InputError("node " + describe_node(node_index) + " uses a missing mesh");
+    const tinygltf::Mesh& mesh = model_.meshes[size_t(node.mesh)];
+    if (node.skin >= 0)
+      scene_.warnings.push_back("node " + describe_node(node_index) + " is skinned; it is baked in its node transform, not posed");
+    for (size_t k = 0; k < mesh.primitives.size(); ++k) {
+      const tinygltf::Primitive& prim = mesh.primitives[k];
+      ++scene_.summary.primitives;
+      std::string where = "mesh '" + (mesh.name.empty() ? std::to_string(node.mesh) : mesh.name) + "' primitive " + std::to_string(k);
+      int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
+      if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN) {
+        ++scene_.summary.skipped_primitives;
+        scene_.warnings.push_back(where + " draws points or lines; skipped");
+        continue;
+      }
+      auto pos = prim.attributes.find("POSITION");
+      if (pos == prim.attributes.end()) throw InputError(where + " has no POSITION attribute");
+      MeshInstance inst;
+      inst.name = (node.name.empty() ? "node " + std::to_string(node_index) : node.name) + " / " + where;
+      inst.node = node_index;
+      inst.mesh = node.mesh;
+      inst.primitive = int(k);
+      inst.mirrored = world.determinant3() < 0;
+      if (prim.material >= int(model_.materials.size())) throw InputError(where + " uses a missing material");
+      inst.material = prim.material;
+
+      int components;
+      std::vector<float> p = accessor_floats(model_, pos->second, &components);
+      if (components != 3) throw InputError(where + ": POSITION is not VEC3");
+      const size_t vertex_count = p.size() / 3;
+      inst.positions.resize(vertex_count);
+      for (size_t v = 0; v < vertex_count; ++v) {
+        Vec3 local{p[3 * v], p[3 * v + 1], p[3 * v + 2]};
+        if (!is_finite(local)) throw InputError(where + ": POSITION has a non-finite value at vertex " + std::to_string(v));
+        inst.positions[v] = world.transform_point(local);
+        if (!is_finite(inst.positions[v]))
+          throw InputError(where + ": vertex " + std::to_string(v) + " is not finite after its node transform");
+      }
+      read_normals(prim, world, inst, where);
+      read_texcoords(prim, inst, where);
+      read_colors(prim, inst, where);
+
+      std::vector<uint32_t> indices;
+      if (prim.indices >= 0) {
+        indices = accessor_indices(model_, prim.indices);
+        for (size_t i = 0; i < indices.size(); ++i)
+          if (indices[i] >= vertex_count)
+            throw InputError(where + ": index " + std::to_string(indices[i]) + " at position " + std::to_string(i) +
+                             " is out of range (" + std::to_string(vertex_count) + " vertices)");
+      } else {
+        indices.resize(vertex_count);
+        for (size_t i = 0; i < vertex_count; ++i) indices[i] = uint32_t(i);
+      }
+      inst.triangles = to_triangle_list(indices, mode, where);
+      scene_.instances.push_back(std::move(inst));
+    }
+  }
+
+  std::vector<uint32_t> to_triangle_list(const std::vector<uint32_t>& idx, int mode, const std::string& where) {
+    std::vector<uint32_t> tri;
+    if (mode == TINYGLTF_MODE_TRIANGLES) {
+      if (idx.size() % 3) scene_.warnings.push_back(where + ": index count is not a multiple of 3; the remainder is ignored");
+      tri.assign(idx.begin(), idx.begin() + long(idx.size() / 3 * 3));
+    } else if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+      for (size_t i = 0; i + 2 < idx.size(); ++i) {  // glTF 2.0 section 3.7.2.1: keep the winding
+        tri.insert(tri.end(), {idx[i], idx[i + 1 + i % 2], idx[i + 2 - i % 2]});
+      }
+    } else {
+      for (size_t i = 1; i + 1 < idx.size(); ++i) tri.insert(tri.end(), {idx[i], idx[i + 1], idx[0]});
+    }
+    return tri;
+  }
+
+  void read_normals(const tinygltf::Primitive& prim, const Mat4& world, MeshInstance& inst, const std::string& where) {
+    auto it = prim.attributes.find("NORMAL");
+    if (it == prim.attributes.end()) return;
+    int components;
+    std::vector<float> n = accessor_floats(model_, it->second, &components);
+    if (components != 3 || n.size() / 3 != inst.positions.size()) throw InputError(where + ": NORMAL does not match POSITION");
+    inst.normals.resize(inst.positions.size());
+    for (size_t v = 0; v < inst.normals.size(); ++v) {
+      Vec3 w = normalize(world.transform_normal({n[3 * v], n[3 * v + 1], n[3 * v + 2]}));
+      if (!is_finite(w) || length(w) < 0.5f) {
+        scene_.warnings.push_back(where + ": NORMAL has zero or non-finite vectors; face normals are used instead");
+        inst.normals.clear();
+        return;
+      }
+      inst.normals[v] = w;
+    }
+  }
+
+  void read_texcoords(const tinygltf::Primitive& prim, MeshInstance& inst, const std::string& where) {
+    for (int set = 0; set < 8; ++set) {
+      auto it = prim.attributes.find("TEXCOORD_" + std::to_string(set));
+      if (it == prim.attributes.end()) continue;
+      int components;
+      std::vector<float> uv = accessor_floats(model_, it->second, &components);
+      if (components != 2 || uv.size() / 2 != inst.positions.size())
+        throw InputError(where + ": TEXCOORD_" + std::to_string(set) + " does not match POSITION");
+      inst.texcoords.resize(size_t(set) + 1);
+      auto& out = inst.texcoords[size_t(set)];
+      out.resize(inst.positions.size());
+      for (size_t v = 0; v < out.size(); ++v) out[v] = {uv[2 * v], uv[2 * v + 1]};
+    }
+  }
+
+  void read_colors(const tinygltf::Primitive& prim, MeshInstance& inst, const std::string& where) {
+    auto it = prim.attributes.find("COLOR_0");
+    if (it == prim.attributes.end()) return;
+    int components;
+    std::vector<float> c = accessor_floats(model_, it->second, &components);
+    if ((components != 3 && components != 4) || c.size() / size_t(components) != inst.positions.size())
+      throw InputError(where + ": COLOR_0 does not match POSITION");
+    inst.colors.resize(inst.positions.size());
+    for (size_t v = 0; v < inst.colors.size(); ++v)
+      inst.colors[v] = {c[v * size_t(components)], c[v * size_t(components) + 1], c[v * size_t(components) + 2]};
+  }
+
+  void add_light(int index, const Mat4& world) {
+    if (index < 0 || size_t(index) >= model_.lights.size())
+      throw InputError("a node refers to KHR_lights_punctual light " + std::to_string(index) + ", which does not exist");
+    const tinygltf::Light& in = model_.lights[size_t(index)];
+    Light light;
+    light.name = in.name.empty() ? "light " + std::to_string(index) : in.name;
+    if (in.type == "point") light.type = LightType::Point;
+    else if (in.type == "spot") light.type = LightType::Spot;
+    else if (in.type == "directional") light.type = LightType::Directional;
+    else throw InputError("light '" + light.name + "' has unknown type '" + in.type + "'");
+    if (in.color.size() == 3) light.color = {float(in.color[0]), float(in.color[1]), float(in.color[2])};
+    light.intensity = float(in.intensity);
+    light.range = float(in.range);
+    light.inner_cone_angle = float(in.spot.innerConeAngle);
+    light.outer_cone_angle = float(in.spot.outerConeAngle);
+    if (!std::isfinite(light.intensity) || light.intensity < 0 || !is_finite(light.color) ||
+        std::min({light.color.x, light.color.y, light.color.z}) < 0)
+      throw InputError("light '" + light.name + "' has a negative or non-finite intensity or colour");
+    if (!(light.range >= 0)) throw InputError("light '" + light.name + "' has a negative range");
+    light.position = world.transform_point({0, 0, 0});
+    light.direction = normalize(world.transform_direction({0, 0, -1}));
+    if (light.type != LightType::Point && !(length(light.direction) > 0.5f))
+      throw InputError("light '" + light.name + "' has a degenerate direction (its node scales to zero)");
+    scene_.lights.push_back(light);
+  }
+
+  TextureRef texture_ref(int texture_index, int tex_coord, const tinygltf::ExtensionMap& extensions) {
+    TextureRef ref;
+    if (texture_index < 0) return ref;
+    if (size_t(texture_index) >= model_.textures.size()) throw InputError("a material uses missing texture " + std::to_string(texture_index));
+    const tinygltf::Texture& tex = model_.textures[size_t(texture_index)];
+    if (tex.source < 0 || size_t(tex.source) >= model_.images.size() || !usable_image_[size_t(tex.source)]) return ref;
+    ref.image = tex.source;
+    ref.tex_coord = tex_coord;
+    if (tex.sampler >= 0 && size_t(tex.sampler) < model_.samplers.size()) {
+      ref.wrap_s = wrap_mode(model_.samplers[size_t(tex.sampler)].wrapS);
+      ref.wrap_t = wrap_mode(model_.samplers[size_t(tex.sampler)].wrapT);
+    }
+    auto t = extensions.find("KHR_texture_transform");
+    if (t != extensions.end()) {
+      const tinygltf::Value& v = t->second;
+      if (v.Has("offset") && v.Get("offset").ArrayLen() == 2)
+        ref.transform.offset = {float(v.Get("offset").Get(0).GetNumberAsDouble()), float(v.Get("offset").Get(1).GetNumberAsDouble())};
+      if (v.Has("scale") && v.Get("scale").ArrayLen() == 2)
+        ref.transform.scale = {float(v.Get("scale").Get(0).GetNumberAsDouble()), float(v.Get("scale").Get(1).GetNumberAsDouble())};
+      ref.transform.rotation = float(number(v, "rotation", 0));
+      ref.tex_coord = int(number(v, "texCoord", tex_coord));
+    }
+    return ref;
+  }
+
+  void convert_images() {
+    usable_image_.assign(model_.images.size(), 0);
+    for (size_t i = 0; i < model_.images.size(); ++i) {
+      const tinygltf::Image& in = model_.images[i];
+      Image out;
+      out.name = in.name.empty() ? (in.uri.empty() ? "image " + std::to_string(i) : in.uri) : in.name;
+      bool decoded = in.width > 0 && in.height > 0 && in.component == 4 && (in.bits == 8 || in.bits == 16) &&
+                     in.image.size() == size_t(in.width) * size_t(in.height) * 4 * size_t(in.bits / 8);
+      if (!decoded) {
+        scene_.warnings.push_back("image '" + out.name + "' could not be decoded; textures using it are ignored");
+      } else {
+        out.width = in.width;
+        out.height = in.height;
+        out.bits = in.bits;
+        out.pixels = in.image;
+        usable_image_[i] = 1;
+      }
+      scene_.images.push_back(std::move(out));
+    }
+  }
+
+  void convert_materials() {
+    for (const tinygltf::Material& in : model_.materials) {
+      Material m;
+      m.name = in.name;
+      const auto& pbr = in.pbrMetallicRoughness;
+      if (pbr.baseColorFactor.size() == 4) {
+        m.base_color = {float(pbr.baseColorFactor[0]), float(pbr.baseColorFactor[1]), float(pbr.baseColorFactor[2])};
+        m.base_alpha = float(pbr.baseColorFactor[3]);
+      }
+      m.base_color_texture = texture_ref(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, pbr.baseColorTexture.extensions);
+      m.metallic = float(pbr.metallicFactor);
+      m.metallic_roughness_texture = texture_ref(pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
+                                                 pbr.metallicRoughnessTexture.extensions);
+      if (in.emissiveFactor.size() == 3)
+        m.emissive = {float(in.emissiveFactor[0]), float(in.emissiveFactor[1]), float(in.emissiveFactor[2])};
+      m.emissive_texture = texture_ref(in.emissiveTexture.index, in.emissiveTexture.texCoord, in.emissiveTexture.extensions);
+      auto strength = in.extensions.find("KHR_materials_emissive_strength");
+      if (strength != in.extensions.end()) m.emissive_strength = float(number(strength->second, "emissiveStrength", 1.0));
+      m.double_sided = in.doubleSided;
+      std::string name = in.name.empty() ? "a material" : "material '" + in.name + "'";
+      if (!is_finite(m.base_color) || !is_finite(m.emissive) || !std::isfinite(m.emissive_strength) ||
+          !std::isfinite(m.metallic) || std::min({m.emissive.x, m.emissive.y, m.emissive.z, m.emissive_strength}) < 0)
+        throw InputError(name + " has a non-finite or negative factor");
+      scene_.materials.push_back(std::move(m));
+    }
+  }
+
+  const tinygltf::Model& model_;
+  Scene& scene_;
+  std::vector<char> usable_image_;
+};
+
+}  // namespace
+
+LoadedScene load_gltf(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) throw InputError(path + ": no such file");
+  auto src = std::make_shared<GltfSource>();
+  src->path = path;
+  src->base_dir = fs::path(path).parent_path().string();
+  std::vector<uint8_t> bytes = read_file(path);
+  src->binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+  if (bytes.size() > 0xffffffffu) throw InputError(path + ": file larger than 4 GiB");
+
+  tinygltf::TinyGLTF loader;
+  std::string err, warn;
+  bool ok = src->binary
+                ? loader.LoadBinaryFromMemory(&src->model, &err, &warn, bytes.data(), unsigned(bytes.size()), src->base_dir)
+                : loader.LoadASCIIFromString(&src->model, &err, &warn, reinterpret_cast<const char*>(bytes.data()),
+                                             unsigned(bytes.size()), src->base_dir);
+  if (!ok) throw InputError(path + ": " + one_line(err.empty() ? "not a valid glTF file" : err));
+  if (src->binary) split_glb(bytes, *src);
+  else src->json_text.assign(bytes.begin(), bytes.end());
+
+  LoadedScene out;
+  if (!warn.empty()) out.scene.warnings.push_back(one_line(warn));
+  SceneBuilder(src->model, out.scene).build();
+  out.source = std::move(src);
+  return out;
+}
+
+}  // namespace radbake

@@ -1,0 +1,357 @@
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <nlohmann/json.hpp>
+#include <tuple>
+
+#include "io/gltf_source.h"
+
+namespace radbake {
+namespace {
+
+using json = nlohmann::ordered_json;
+namespace fs = std::filesystem;
+
+constexpr int kArrayBuffer = 34962, kElementArrayBuffer = 34963;
+
+void write_bytes(const fs::path& path, const uint8_t* data, size_t size) {
+  std::ofstream out(path, std::ios::binary);
+  out.write(reinterpret_cast<const char*>(data), std::streamsize(size));
+  if (!out) throw std::runtime_error("cannot write " + path.string());
+}
+
+std::string uri_decode(const std::string& uri) {
+  std::string out;
+  for (size_t i = 0; i < uri.size(); ++i) {
+    if (uri[i] == '%' && i + 2 < uri.size() && std::isxdigit(static_cast<unsigned char>(uri[i + 1])) &&
+        std::isxdigit(static_cast<unsigned char>(uri[i + 2]))) {
+      out += char(std::stoi(uri.substr(i + 1, 2), nullptr, 16));
+      i += 2;
+    } else {
+      out += uri[i];
+    }
+  }
+  return out;
+}
+
+bool is_data_uri(const std::string& uri) { return uri.rfind("data:", 0) == 0; }
+
+// Appends accessors and their buffer views over one new binary buffer.
+class BinaryWriter {
+ public:
+  BinaryWriter(json& doc, int buffer_index) : doc_(doc), buffer_(buffer_index) {}
+
+  int add(const std::vector<uint8_t>& bytes, size_t count, const char* type, int component_type, bool normalized,
+          int target, bool with_bounds) {
+    while (data_.size() % 4) data_.push_back(0);
+    json view = {{"buffer", buffer_}, {"byteOffset", data_.size()}, {"byteLength", bytes.size()}};
+    if (target) view["target"] = target;
+    data_.insert(data_.end(), bytes.begin(), bytes.end());
+    doc_["bufferViews"].push_back(view);
+    json accessor = {{"bufferView", doc_["bufferViews"].size() - 1},
+                     {"componentType", component_type},
+                     {"count", count},
+                     {"type", type}};
+    if (normalized) accessor["normalized"] = true;
+    if (with_bounds && count > 0) add_bounds(accessor, bytes, count, component_type);
+    doc_["accessors"].push_back(accessor);
+    return int(doc_["accessors"].size() - 1);
+  }
+
+  const std::vector<uint8_t>& data() const { return data_; }
+
+ private:
+  static double component(const uint8_t* p, int component_type) {
+    switch (component_type) {
+      case TINYGLTF_COMPONENT_TYPE_BYTE: { int8_t v; std::memcpy(&v, p, 1); return v; }
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return *p;
+      case TINYGLTF_COMPONENT_TYPE_SHORT: { int16_t v; std::memcpy(&v, p, 2); return v; }
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: { uint16_t v; std::memcpy(&v, p, 2); return v; }
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: { uint32_t v; std::memcpy(&v, p, 4); return v; }
+      default: { float v; std::memcpy(&v, p, 4); return v; }
+    }
+  }
+
+  static void add_bounds(json& accessor, const std::vector<uint8_t>& bytes, size_t count, int component_type) {
+    const size_t cs = component_size(component_type);
+    const size_t n = bytes.size() / count / cs;
+    std::vector<double> lo(n, INFINITY), hi(n, -INFINITY);
+    for (size_t i = 0; i < count; ++i)
+      for (size_t c = 0; c < n; ++c) {
+        double v = component(&bytes[(i * n + c) * cs], component_type);
+        lo[c] = std::min(lo[c], v);
+        hi[c] = std::max(hi[c], v);
+      }
+    // Floats are written as the float values themselves, so validators compare like with like.
+    accessor["min"] = json::array();
+    accessor["max"] = json::array();
+    for (size_t c = 0; c < n; ++c) {
+      accessor["min"].push_back(component_type == TINYGLTF_COMPONENT_TYPE_FLOAT ? json(float(lo[c])) : json(lo[c]));
+      accessor["max"].push_back(component_type == TINYGLTF_COMPONENT_TYPE_FLOAT ? json(float(hi[c])) : json(hi[c]));
+    }
+  }
+
+  json& doc_;
+  int buffer_;
+  std::vector<uint8_t> data_;
+};
+
+template <typename T>
+std::vector<uint8_t> as_bytes(const std::vector<T>& v) {
+  std::vector<uint8_t> out(v.size() * sizeof(T));
+  if (!out.empty()) std::memcpy(out.data(), v.data(), out.size());
+  return out;
+}
+
+// Every texCoord a material's textures read, including KHR_texture_transform overrides.
+void collect_tex_coords(const json& node, std::vector<int>& sets) {
+  if (node.is_object()) {
+    for (auto it = node.begin(); it != node.end(); ++it) {
+      if (it.key() == "texCoord" && it.value().is_number_integer()) sets.push_back(it.value().get<int>());
+      collect_tex_coords(it.value(), sets);
+    }
+  } else if (node.is_array()) {
+    for (const json& v : node) collect_tex_coords(v, sets);
+  }
+}
+
+class Writer {
+ public:
+  Writer(const GltfSource& src, const Scene& scene, const Atlas& atlas, const std::vector<std::vector<Rgb>>& values,
+         const LightmapFiles& lightmaps, const fs::path& folder, const std::string& name)
+      : src_(src), scene_(scene), atlas_(atlas), values_(values), lightmaps_(lightmaps), folder_(folder), name_(name),
+        doc_(json::parse(src.json_text)) {}
+
+  GltfOutput run() {
+    // COLOR_0 must stay within [0, 1]; its scale is the PNG's unless a vertex is brighter.
+    color_scale_ = lightmaps_.png_scale;
+    for (const auto& mesh : values_)
+      for (Rgb c : mesh) color_scale_ = std::max(color_scale_, max_component(c));
+    for (const char* key : {"accessors", "bufferViews", "buffers", "meshes", "materials", "images", "textures", "samplers"})
+      if (!doc_.contains(key)) doc_[key] = json::array();
+    original_meshes_ = doc_["meshes"];
+    original_materials_ = doc_["materials"];
+    relocate_buffers();
+    copy_images();
+    const int lightmap_buffer = int(doc_["buffers"].size());
+    BinaryWriter bin(doc_, lightmap_buffer);
+    add_lightmap_textures();
+    for (size_t i = 0; i < scene_.instances.size(); ++i) rewrite_primitive(i, bin);
+    std::string bin_name = name_ + "_lightmap.bin";
+    doc_["buffers"].push_back({{"uri", bin_name}, {"byteLength", bin.data().size()}});
+    write_bytes(folder_ / bin_name, bin.data().data(), bin.data().size());
+    out_.written_files.push_back(bin_name);
+    add_extension_used("MOZ_lightmap");
+    describe_bake();
+    out_.gltf_file = name_ + ".gltf";
+    std::ofstream file(folder_ / out_.gltf_file);
+    file << doc_.dump(2) << "\n";
+    if (!file) throw std::runtime_error("cannot write " + (folder_ / out_.gltf_file).string());
+    out_.written_files.push_back(out_.gltf_file);
+    return out_;
+  }
+
+ private:
+  // Input buffers are written beside the output (the .glb's BIN chunk as a file of its own), so
+  // the folder stands alone.
+  void relocate_buffers() {
+    json& buffers = doc_["buffers"];
+    for (size_t b = 0; b < buffers.size(); ++b) {
+      json& buffer = buffers[b];
+      std::string uri = buffer.value("uri", "");
+      if (is_data_uri(uri)) continue;
+      const std::vector<uint8_t>* data = &src_.model.buffers[b].data;
+      if (uri.empty() && src_.binary && b == 0) data = &src_.glb_bin;
+      std::string file = name_ + "_buffer" + std::to_string(b) + ".bin";
+      size_t length = buffer.value("byteLength", size_t(0));
+      std::vector<uint8_t> bytes(data->begin(), data->begin() + long(std::min(length, data->size())));
+      bytes.resize(length, 0);
+      write_bytes(folder_ / file, bytes.data(), bytes.size());
+      buffer["uri"] = file;
+      out_.written_files.push_back(file);
+    }
+  }
+
+  void copy_images() {
+    json& images = doc_["images"];
+    for (size_t i = 0; i < images.size(); ++i) {
+      std::string uri = images[i].value("uri", "");
+      if (uri.empty() || is_data_uri(uri)) continue;
+      fs::path from = fs::path(src_.base_dir) / uri_decode(uri);
+      std::string file = name_ + "_image" + std::to_string(i) + fs::path(uri_decode(uri)).extension().string();
+      std::error_code ec;
+      fs::copy_file(from, folder_ / file, fs::copy_options::overwrite_existing, ec);
+      if (ec) {
+        out_.warnings.push_back("image '" + uri + "' could not be copied: " + ec.message());
+        continue;
+      }
+      images[i]["uri"] = file;
+      out_.written_files.push_back(file);
+    }
+  }
+
+  void add_lightmap_textures() {
+    doc_["samplers"].push_back({{"magFilter", 9729}, {"minFilter", 9987}, {"wrapS", 33071}, {"wrapT", 33071}});
+    const int sampler = int(doc_["samplers"].size() - 1);
+    for (const std::string& png : lightmaps_.png) {
+      doc_["images"].push_back({{"uri", png}, {"mimeType", "image/png"}});
+      doc_["textures"].push_back({{"sampler", sampler}, {"source", doc_["images"].size() - 1}});
+      page_texture_.push_back(int(doc_["textures"].size() - 1));
+    }
+  }
+
+  int mesh_for_node(int node, int mesh) {
+    auto [it, first] = mesh_of_node_.emplace(node, mesh);
+    if (!first) return it->second;
+    if (!meshes_taken_.insert(mesh).second) {
+      json copy = original_meshes_[size_t(mesh)];
+      copy["name"] = copy.value("name", "mesh " + std::to_string(mesh)) + " (node " + std::to_string(node) + ")";
+      doc_["meshes"].push_back(copy);
+      it->second = int(doc_["meshes"].size() - 1);
+    }
+    doc_["nodes"][size_t(node)]["mesh"] = it->second;
+    return it->second;
+  }
+
+  int lightmap_material(int material, int page, int tex_coord) {
+    auto key = std::make_tuple(material, page, tex_coord);
+    auto found = material_clones_.find(key);
+    if (found != material_clones_.end()) return found->second;
+    json m = material >= 0 ? original_materials_[size_t(material)] : json::object();
+    if (material < 0) m["name"] = "radbake default material";
+    m["extensions"]["MOZ_lightmap"] = {
+        {"index", page_texture_[size_t(page)]}, {"texCoord", tex_coord}, {"intensity", lightmaps_.png_scale}};
+    doc_["materials"].push_back(m);
+    return material_clones_[key] = int(doc_["materials"].size() - 1);
+  }
+
+  int remapped(int accessor_index, const std::vector<uint32_t>& source_vertex, BinaryWriter& bin) {
+    size_t element_size;
+    std::vector<uint8_t> bytes = accessor_bytes(src_.model, accessor_index, &element_size);
+    std::vector<uint8_t> out(source_vertex.size() * element_size);
+    for (size_t v = 0; v < source_vertex.size(); ++v)
+      std::memcpy(&out[v * element_size], &bytes[size_t(source_vertex[v]) * element_size], element_size);
+    const json& a = doc_["accessors"][size_t(accessor_index)];
+    bool bounded = a.contains("min") && a.contains("max");
+    return bin.add(out, source_vertex.size(), a["type"].get<std::string>().c_str(), a["componentType"].get<int>(),
+                   a.value("normalized", false), kArrayBuffer, bounded);
+  }
+
+  void rewrite_primitive(size_t i, BinaryWriter& bin) {
+    const MeshInstance& inst = scene_.instances[i];
+    const AtlasMesh& lm = atlas_.meshes[i];
+    const int mesh = mesh_for_node(inst.node, inst.mesh);
+    json& prim = doc_["meshes"][size_t(mesh)]["primitives"][size_t(inst.primitive)];
+    // A working copy: inserting keys into an ordered_json object moves its members, so no
+    // reference into `prim` may be held while it grows.
+    json attributes = prim["attributes"];
+    const int mode = prim.value("mode", 4);
+    const size_t vertex_count = lm.source_vertex.size();
+
+    std::vector<int> used_sets;
+    if (prim.contains("material")) collect_tex_coords(original_materials_[prim["material"].get<size_t>()], used_sets);
+    int lightmap_set = 1;
+    if (!lm.kept_input_uvs) {
+      // Remap every attribute through the atlas's vertex split.
+      for (auto it = attributes.begin(); it != attributes.end(); ++it) it.value() = remapped(it.value().get<int>(), lm.source_vertex, bin);
+      if (prim.contains("targets"))
+        for (json& target : prim["targets"])
+          for (auto it = target.begin(); it != target.end(); ++it) it.value() = remapped(it.value().get<int>(), lm.source_vertex, bin);
+      bool set1_in_use = attributes.contains("TEXCOORD_1") && std::count(used_sets.begin(), used_sets.end(), 1);
+      if (set1_in_use) {
+        while (attributes.contains("TEXCOORD_" + std::to_string(lightmap_set))) ++lightmap_set;
+        out_.warnings.push_back(inst.name + ": its material reads TEXCOORD_1, so lightmap UVs go to TEXCOORD_" +
+                                std::to_string(lightmap_set));
+      }
+      std::vector<float> uv;
+      for (Vec2 p : lm.uvs) uv.insert(uv.end(), {p.x, p.y});
+      int uv_accessor = bin.add(as_bytes(uv), vertex_count, "VEC2", TINYGLTF_COMPONENT_TYPE_FLOAT, false, kArrayBuffer, true);
+      attributes["TEXCOORD_" + std::to_string(lightmap_set)] = uv_accessor;
+      // Attribute sets must be numbered from 0 without gaps.
+      if (!attributes.contains("TEXCOORD_0")) attributes["TEXCOORD_0"] = uv_accessor;
+    }
+    if (!lm.kept_input_uvs || mode != 4) {
+      std::vector<uint8_t> indices;
+      int type;
+      if (vertex_count < 65536) {
+        std::vector<uint16_t> narrow(lm.triangles.begin(), lm.triangles.end());
+        indices = as_bytes(narrow);
+        type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+      } else {
+        indices = as_bytes(lm.triangles);
+        type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+      }
+      prim["indices"] = bin.add(indices, lm.triangles.size(), "SCALAR", type, false, kElementArrayBuffer, false);
+      prim["mode"] = 4;
+    }
+    if (attributes.contains("COLOR_0")) {
+      json source_colors = attributes["COLOR_0"];
+      attributes["_SOURCE_COLOR_0"] = source_colors;
+      out_.warnings.push_back(inst.name + ": its COLOR_0 moved to _SOURCE_COLOR_0 to make room for the baked values");
+    }
+    std::vector<float> colors;
+    for (Rgb c : values_[i]) {
+      Rgb scaled = c / color_scale_;
+      colors.insert(colors.end(), {scaled.x, scaled.y, scaled.z});
+    }
+    attributes["COLOR_0"] = bin.add(as_bytes(colors), vertex_count, "VEC3", TINYGLTF_COMPONENT_TYPE_FLOAT, false, kArrayBuffer, false);
+    prim["attributes"] = attributes;
+    prim["material"] = lightmap_material(prim.contains("material") ? prim["material"].get<int>() : -1, lm.page, lightmap_set);
+  }
+
+  void add_extension_used(const std::string& ext) {
+    if (!doc_.contains("extensionsUsed")) doc_["extensionsUsed"] = json::array();
+    json& used = doc_["extensionsUsed"];
+    if (std::find(used.begin(), used.end(), ext) == used.end()) used.push_back(ext);
+  }
+
+  void describe_bake() {
+    json pages = json::array();
+    for (size_t p = 0; p < lightmaps_.png.size(); ++p)
+      pages.push_back({{"png", lightmaps_.png[p]}, {"exr", lightmaps_.exr[p]}, {"texture", page_texture_[p]}});
+    json info = {
+        {"generator", "radbake"},
+        {"quantity", lightmaps_.quantity},
+        {"unit", lightmaps_.unit},
+        {"pages", pages},
+        {"exr", "linear half-float RGB, the quantity in its unit"},
+        {"png", "8-bit sRGB-encoded; quantity = srgb_to_linear(png / 255) * MOZ_lightmap.intensity"},
+        {"png_intensity", lightmaps_.png_scale},
+        {"color_0", "linear RGB per vertex; quantity = COLOR_0 * color_0_intensity"},
+        {"color_0_intensity", color_scale_},
+    };
+    json& extras = doc_["extras"];
+    if (extras.is_null()) extras = json::object();
+    if (extras.is_object()) extras["radbake"] = info;
+    else doc_["asset"]["extras"]["radbake"] = info;
+  }
+
+  const GltfSource& src_;
+  const Scene& scene_;
+  const Atlas& atlas_;
+  const std::vector<std::vector<Rgb>>& values_;
+  const LightmapFiles& lightmaps_;
+  fs::path folder_;
+  std::string name_;
+  json doc_, original_meshes_, original_materials_;
+  std::map<int, int> mesh_of_node_;
+  std::set<int> meshes_taken_;
+  std::map<std::tuple<int, int, int>, int> material_clones_;
+  std::vector<int> page_texture_;
+  float color_scale_ = 1;
+  GltfOutput out_;
+};
+
+}  // namespace
+
+GltfOutput write_gltf(const GltfSource& source, const Scene& scene, const Atlas& atlas,
+                      const std::vector<std::vector<Rgb>>& vertex_values, const LightmapFiles& lightmaps,
+                      const std::string& folder, const std::string& name) {
+  return Writer(source, scene, atlas, vertex_values, lightmaps, folder, name).run();
+}
+
+}  // namespace radbake

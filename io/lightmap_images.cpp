@@ -1,0 +1,87 @@
+#include "io/lightmap_images.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <stdexcept>
+
+namespace radbake {
+namespace {
+
+uint8_t encode_srgb(float linear) {
+  float v = std::clamp(std::isfinite(linear) ? linear : 0.0f, 0.0f, 1.0f);
+  float s = v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
+  return uint8_t(std::lround(s * 255.0f));
+}
+
+void write_image(const std::string& path, int width, int height, const OIIO::TypeDesc& format, const void* pixels,
+                 const OIIO::TypeDesc& pixel_type, bool exr) {
+  auto out = OIIO::ImageOutput::create(path);
+  if (!out) throw std::runtime_error("cannot create " + path + ": " + OIIO::geterror());
+  OIIO::ImageSpec spec(width, height, 3, format);
+  if (exr) spec.attribute("compression", "zip");
+  if (!out->open(path, spec) || !out->write_image(pixel_type, pixels) || !out->close())
+    throw std::runtime_error("cannot write " + path + ": " + out->geterror());
+}
+
+}  // namespace
+
+void write_exr(const std::string& path, const LightmapPage& page) {
+  std::vector<float> linear(page.texels.size() * 3);
+  for (size_t t = 0; t < page.texels.size(); ++t)
+    for (int c = 0; c < 3; ++c) linear[3 * t + size_t(c)] = page.texels[t][c];
+  write_image(path, page.width, page.height, OIIO::TypeDesc::HALF, linear.data(), OIIO::TypeDesc::FLOAT, true);
+}
+
+float automatic_png_scale(const std::vector<LightmapPage>& pages) {
+  std::vector<float> brightest;
+  for (const LightmapPage& page : pages)
+    for (size_t t = 0; t < page.texels.size(); ++t)
+      if (page.valid[t]) brightest.push_back(max_component(page.texels[t]));
+  if (brightest.empty()) return 1.0f;
+  size_t k = std::min(brightest.size() - 1, size_t(std::floor(0.999 * double(brightest.size() - 1))));
+  std::nth_element(brightest.begin(), brightest.begin() + long(k), brightest.end());
+  float scale = brightest[k];
+  return scale > 0 && std::isfinite(scale) ? scale : 1.0f;
+}
+
+LightmapFiles write_lightmaps(const std::vector<LightmapPage>& pages, const std::string& folder,
+                              const std::string& name, const std::string& quantity, const std::string& unit,
+                              float png_scale) {
+  LightmapFiles files;
+  files.quantity = quantity;
+  files.unit = unit;
+  files.png_scale = png_scale;
+  for (size_t p = 0; p < pages.size(); ++p) {
+    const LightmapPage& page = pages[p];
+    std::string stem = name + "_lightmap_" + std::to_string(p);
+    files.exr.push_back(stem + ".exr");
+    files.png.push_back(stem + ".png");
+    std::vector<uint8_t> encoded(page.texels.size() * 3);
+    for (size_t t = 0; t < page.texels.size(); ++t)
+      for (int c = 0; c < 3; ++c) encoded[3 * t + size_t(c)] = encode_srgb(page.texels[t][c] / png_scale);
+    write_exr((std::filesystem::path(folder) / files.exr.back()).string(), page);
+    write_image((std::filesystem::path(folder) / files.png.back()).string(), page.width, page.height,
+                OIIO::TypeDesc::UINT8, encoded.data(), OIIO::TypeDesc::UINT8, false);
+  }
+  return files;
+}
+
+LightmapPage read_lightmap_exr(const std::string& path) {
+  auto in = OIIO::ImageInput::open(path);
+  if (!in) throw std::runtime_error("cannot open " + path + ": " + OIIO::geterror());
+  const OIIO::ImageSpec& spec = in->spec();
+  LightmapPage page;
+  page.width = spec.width;
+  page.height = spec.height;
+  std::vector<float> pixels(size_t(spec.width) * spec.height * 3);
+  if (!in->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, pixels.data())) throw std::runtime_error("cannot read " + path);
+  page.texels.resize(size_t(spec.width) * spec.height);
+  page.valid.assign(page.texels.size(), 1);
+  for (size_t t = 0; t < page.texels.size(); ++t) page.texels[t] = {pixels[3 * t], pixels[3 * t + 1], pixels[3 * t + 2]};
+  return page;
+}
+
+}  // namespace radbake

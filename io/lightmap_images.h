@@ -1,0 +1,27 @@
+// Lightmap pages as files: linear half-float OpenEXR (the values themselves) and 8-bit PNG
+// (sRGB-encoded value / scale, for viewers and engines that take ordinary images).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "baker/finish.h"
+#include "io/gltf.h"
+
+namespace radbake {
+
+// The PNG scale when none is given: the 99.9th percentile of the brightest channel over all
+// covered texels, so a few hot texels next to a lamp do not darken the whole page.
+float automatic_png_scale(const std::vector<LightmapPage>& pages);
+
+LightmapFiles write_lightmaps(const std::vector<LightmapPage>& pages, const std::string& folder,
+                              const std::string& name, const std::string& quantity, const std::string& unit,
+                              float png_scale);
+
+// One page as linear half-float EXR.
+void write_exr(const std::string& path, const LightmapPage& page);
+
+// Reads an EXR page back (RGB, linear); for tests and `radbake` tools. Throws on failure.
+LightmapPage read_lightmap_exr(const std::string& path);
+
+}  // namespace radbake

@@ -1,0 +1,57 @@
+#include "io/report.h"
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+namespace radbake {
+
+void write_report(const std::string& path, const RunInfo& run, const Scene& scene, const Atlas& atlas,
+                  const BakeReport& bake, const LightmapFiles& lightmaps, const std::vector<std::string>& warnings) {
+  using json = nlohmann::ordered_json;
+  json options = json::object();
+  for (const auto& [key, value] : run.options) options[key] = value;
+  size_t kept = 0;
+  for (const AtlasMesh& m : atlas.meshes) kept += m.kept_input_uvs;
+  json pages = json::array();
+  for (size_t p = 0; p < atlas.pages.size(); ++p)
+    pages.push_back({{"width", atlas.pages[p].width}, {"height", atlas.pages[p].height},
+                     {"exr", lightmaps.exr[p]}, {"png", lightmaps.png[p]}});
+  json stages = json::object();
+  for (const StageTime& t : run.io_times) stages[t.stage] = t.seconds;
+  for (const StageTime& t : bake.stage_times) stages[t.stage] = t.seconds;
+  const SceneSummary& s = scene.summary;
+  json report = {
+      {"generator", "radbake"},
+      {"input", {{"file", run.input}, {"nodes", s.nodes}, {"meshes", s.meshes}, {"primitives", s.primitives},
+                 {"skipped_primitives", s.skipped_primitives}, {"instances", scene.instances.size()},
+                 {"triangles", s.triangles}, {"materials", s.materials}, {"textures", s.textures},
+                 {"lights", s.lights}}},
+      {"options", options},
+      {"atlas", {{"texel_density_per_m", atlas.texel_density}, {"charts", atlas.chart_count},
+                 {"meshes_with_kept_uvs", kept}, {"pages", pages}}},
+      {"counts", {{"page_texels", bake.page_texels}, {"elements", bake.elements},
+                  {"valid_elements", bake.valid_elements}, {"buried_elements", bake.buried_elements},
+                  {"moved_samples", bake.moved_samples}, {"patches", bake.patches},
+                  {"patch_block_texels", bake.patch_block_size}, {"rays", bake.rays}}},
+      {"seconds", stages},
+      {"total_seconds", run.total_seconds},
+      {"peak_memory_bytes", run.peak_memory_bytes},
+      {"solver", {{"iterations", bake.solver_iterations}, {"unshot_relative", bake.unshot_relative},
+                  {"converged", bake.converged},
+                  {"ambient_lm_per_m2", {bake.ambient.x, bake.ambient.y, bake.ambient.z}}}},
+      {"energy_balance", {{"emitted_lm", bake.balance.emitted}, {"absorbed_lm", bake.balance.absorbed},
+                          {"escaped_lm", bake.balance.escaped}, {"lost_lm", bake.balance.lost},
+                          {"relative_error", bake.balance.relative_error},
+                          {"note", "mean of RGB channels; emitted counts emitting surfaces and what punctual "
+                                   "lights deliver onto surfaces; lost is light striking back faces"}}},
+      {"lightmaps", {{"quantity", lightmaps.quantity}, {"unit", lightmaps.unit},
+                     {"png_intensity", lightmaps.png_scale}}},
+      {"warnings", warnings},
+  };
+  std::ofstream out(path);
+  out << report.dump(2) << "\n";
+  if (!out) throw std::runtime_error("cannot write " + path);
+}
+
+}  // namespace radbake

@@ -1,0 +1,115 @@
+#!/usr/bin/env python3
+"""Regenerates the sample scenes: python3 samples/make_samples.py
+
+cornell_box/  The Cornell box from the published Cornell geometry (graphics.cornell.edu
+              "Cornell Box Data", millimetres converted to metres) with the usual RGB
+              reflectances and its ceiling light.
+ferren/       After the Goral et al. (1984) demonstration: vertical boards, white on the side
+              facing the viewer and brightly coloured on the back, lit from behind by a window.
+"""
+import math
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from gltf_builder import Gltf, box_faces, facing  # noqa: E402
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+WHITE = (0.725, 0.71, 0.68)
+RED = (0.63, 0.065, 0.05)
+GREEN = (0.14, 0.45, 0.091)
+
+
+def mm(points):
+    return [[c / 1000.0 for c in p] for p in points]
+
+
+def cornell_box():
+    g = Gltf("radbake samples/make_samples.py")
+    inside = [0.278, 0.274, 0.280]
+    white = g.material("white", WHITE)
+    red = g.material("red", RED)
+    green = g.material("green", GREEN)
+    # Luminance 20000 cd/m2 (emissive x strength): about 860 lm from the 130 x 105 mm panel.
+    light = g.material("light", (0.78, 0.78, 0.78), emissive=(1.0, 0.85, 0.6), strength=20000.0)
+
+    walls = {
+        "floor": (white, [[552.8, 0, 0], [0, 0, 0], [0, 0, 559.2], [549.6, 0, 559.2]]),
+        "ceiling": (white, [[556.0, 548.8, 0], [556.0, 548.8, 559.2], [0, 548.8, 559.2], [0, 548.8, 0]]),
+        "back_wall": (white, [[549.6, 0, 559.2], [0, 0, 559.2], [0, 548.8, 559.2], [556.0, 548.8, 559.2]]),
+        "right_wall_green": (green, [[0, 0, 559.2], [0, 0, 0], [0, 548.8, 0], [0, 548.8, 559.2]]),
+        "left_wall_red": (red, [[552.8, 0, 0], [549.6, 0, 559.2], [556.0, 548.8, 559.2], [556.0, 548.8, 0]]),
+    }
+    for name, (material, poly) in walls.items():
+        g.node(name, g.mesh(name, [facing(mm(poly), inside)], material))
+
+    # The light sits 0.1 mm under the ceiling, facing down.
+    lamp = mm([[343.0, 548.7, 227.0], [343.0, 548.7, 332.0], [213.0, 548.7, 332.0], [213.0, 548.7, 227.0]])
+    g.node("light", g.mesh("light", [facing(lamp, [0.278, 0.0, 0.280])], light))
+
+    short_block = [
+        [[130.0, 165.0, 65.0], [82.0, 165.0, 225.0], [240.0, 165.0, 272.0], [290.0, 165.0, 114.0]],
+        [[290.0, 0.0, 114.0], [290.0, 165.0, 114.0], [240.0, 165.0, 272.0], [240.0, 0.0, 272.0]],
+        [[130.0, 0.0, 65.0], [130.0, 165.0, 65.0], [290.0, 165.0, 114.0], [290.0, 0.0, 114.0]],
+        [[82.0, 0.0, 225.0], [82.0, 165.0, 225.0], [130.0, 165.0, 65.0], [130.0, 0.0, 65.0]],
+        [[240.0, 0.0, 272.0], [240.0, 165.0, 272.0], [82.0, 165.0, 225.0], [82.0, 0.0, 225.0]],
+    ]
+    tall_block = [
+        [[423.0, 330.0, 247.0], [265.0, 330.0, 296.0], [314.0, 330.0, 456.0], [472.0, 330.0, 406.0]],
+        [[423.0, 0.0, 247.0], [423.0, 330.0, 247.0], [472.0, 330.0, 406.0], [472.0, 0.0, 406.0]],
+        [[472.0, 0.0, 406.0], [472.0, 330.0, 406.0], [314.0, 330.0, 456.0], [314.0, 0.0, 456.0]],
+        [[314.0, 0.0, 456.0], [314.0, 330.0, 456.0], [265.0, 330.0, 296.0], [265.0, 0.0, 296.0]],
+        [[265.0, 0.0, 296.0], [265.0, 330.0, 296.0], [423.0, 330.0, 247.0], [423.0, 0.0, 247.0]],
+    ]
+    for name, faces, centre in (("short_block", short_block, [186.0, 82.5, 168.5]),
+                                ("tall_block", tall_block, [368.5, 165.0, 351.25])):
+        c = [x / 1000.0 for x in centre]
+        polys = []
+        for f in faces:
+            poly = mm(f)
+            mirrored = [2 * sum(p[k] for p in poly) / 4 - c[k] for k in range(3)]
+            polys.append(facing(poly, mirrored))  # outward
+        g.node(name, g.mesh(name, polys, white))
+
+    # The published camera: at (278, 273, -800) mm looking down +Z (glTF cameras look down -Z).
+    cam = g.camera("camera", yfov=2 * math.atan(0.0125 / 0.035), aspect=1.0)
+    g.node("camera", camera=cam, translation=[0.278, 0.273, -0.8], rotation=[0, 1, 0, 0])
+    out = os.path.join(HERE, "cornell_box")
+    os.makedirs(out, exist_ok=True)
+    g.save(os.path.join(out, "cornell_box.gltf"), bin_name="cornell_box.bin")
+
+
+def ferren():
+    g = Gltf("radbake samples/make_samples.py")
+    white = g.material("white", (0.8, 0.8, 0.8))
+    floor = g.material("floor", (0.5, 0.5, 0.5))
+    colours = [("red", (0.85, 0.08, 0.06)), ("yellow", (0.85, 0.7, 0.05)), ("green", (0.08, 0.7, 0.12)),
+               ("blue", (0.08, 0.15, 0.85)), ("magenta", (0.75, 0.08, 0.65))]
+    # A window behind the boards, facing them: luminance 4000 cd/m2, daylight-white.
+    window = g.material("window", (0.0, 0.0, 0.0), emissive=(0.95, 0.97, 1.0), strength=4000.0)
+
+    g.node("floor", g.mesh("floor", [[[-2, 0, -2], [-2, 0, 2.5], [2, 0, 2.5], [2, 0, -2]]], floor))
+    # Boards turned 45 degrees like vertical louvres: the white front of each (toward the viewer at
+    # -Z and toward +X) faces the coloured back of its neighbour, which the window lights.
+    for i, (name, colour) in enumerate(colours):
+        x = -0.6 + 0.3 * i
+        # Thin along local X: after the turn, the +X face looks toward -Z and +X (the viewer and the
+        # next board), the -X face toward +Z and -X (the window and the previous board).
+        faces = box_faces([x, 0.5, 0.0], [0.02, 1.0, 0.4], rotation_y=math.radians(45))
+        coloured = g.material(name, colour)
+        g.node("board_%d_white" % i, g.mesh("board_%d_white" % i, [faces["+x"], faces["+z"], faces["-z"],
+                                                                   faces["+y"], faces["-y"]], white))
+        g.node("board_%d_%s" % (i, name), g.mesh("board_%d_%s" % (i, name), [faces["-x"]], coloured))
+    win = [[-1.2, 0.1, 1.4], [-1.2, 1.5, 1.4], [1.2, 1.5, 1.4], [1.2, 0.1, 1.4]]
+    g.node("window", g.mesh("window", [facing(win, [0, 0.7, 0])], window))
+    cam = g.camera("camera", yfov=math.radians(40), aspect=1.5)
+    g.node("camera", camera=cam, translation=[0.0, 0.9, -2.6], rotation=[0, 1, 0, 0])
+    out = os.path.join(HERE, "ferren")
+    os.makedirs(out, exist_ok=True)
+    g.save(os.path.join(out, "ferren.gltf"), bin_name="ferren.bin")
+
+
+if __name__ == "__main__":
+    cornell_box()
+    ferren()

@@ -1,0 +1,89 @@
+#include "support/scene_builders.h"
+
+namespace radbake::test {
+
+std::string source_path(const std::string& relative) { return std::string(RADBAKE_SOURCE_DIR) + "/" + relative; }
+
+int add_material(Scene& scene, Rgb base_color, Rgb emissive, float emissive_strength) {
+  Material m;
+  m.name = "material " + std::to_string(scene.materials.size());
+  m.base_color = base_color;
+  m.metallic = 0;
+  m.emissive = emissive;
+  m.emissive_strength = emissive_strength;
+  scene.materials.push_back(m);
+  return int(scene.materials.size() - 1);
+}
+
+void add_quad(Scene& scene, Vec3 corner, Vec3 u, Vec3 v, int material, const std::string& name) {
+  MeshInstance inst;
+  inst.name = name;
+  inst.node = int(scene.instances.size());
+  inst.mesh = inst.node;
+  inst.primitive = 0;
+  inst.material = material;
+  inst.positions = {corner, corner + u, corner + u + v, corner + v};
+  Vec3 n = normalize(cross(u, v));
+  inst.normals = {n, n, n, n};
+  inst.triangles = {0, 1, 2, 0, 2, 3};
+  scene.instances.push_back(inst);
+  scene.summary.triangles += 2;
+}
+
+void add_box(Scene& scene, Vec3 lo, Vec3 hi, bool inward, const int (&m)[6], const std::string& name) {
+  Vec3 d = hi - lo;
+  Vec3 ex{d.x, 0, 0}, ey{0, d.y, 0}, ez{0, 0, d.z};
+  // Each face listed with edges whose cross product points outward; inward flips the order.
+  struct Face { Vec3 corner, u, v; };
+  Face faces[6] = {{lo, ez, ey}, {lo + ex, ey, ez}, {lo, ex, ez}, {lo + ey, ez, ex}, {lo, ey, ex}, {lo + ez, ex, ey}};
+  const char* names[6] = {"-x", "+x", "-y", "+y", "-z", "+z"};
+  for (int f = 0; f < 6; ++f) {
+    Face fc = faces[f];
+    if (inward) std::swap(fc.u, fc.v);
+    add_quad(scene, fc.corner, fc.u, fc.v, m[f], name + names[f]);
+  }
+}
+
+void add_box(Scene& scene, Vec3 lo, Vec3 hi, bool inward, int material, const std::string& name) {
+  const int m[6] = {material, material, material, material, material, material};
+  add_box(scene, lo, hi, inward, m, name);
+}
+
+Atlas unwrap(const Scene& scene, const AtlasOptions& options) {
+  std::vector<MeshView> views;
+  for (const MeshInstance& inst : scene.instances) {
+    MeshView v;
+    v.positions = inst.positions.data();
+    v.vertex_count = inst.vertex_count();
+    v.triangles = inst.triangles.data();
+    v.triangle_count = inst.triangle_count();
+    v.lightmap_uvs = inst.lightmap_uvs() ? inst.lightmap_uvs()->data() : nullptr;
+    v.name = inst.name;
+    views.push_back(v);
+  }
+  return ensure_lightmap_uvs(views, options);
+}
+
+Baked bake_scene(const Scene& scene, const AtlasOptions& atlas_options, const BakeOptions& options) {
+  Baked b;
+  b.atlas = unwrap(scene, atlas_options);
+  b.result = bake(scene, b.atlas, options);
+  return b;
+}
+
+Rgb mean_irradiance(const BakeResult& r, const std::function<bool(Vec3, Vec3)>& where, size_t* count) {
+  const Elements& e = r.elements;
+  double sum[3] = {0, 0, 0}, area = 0;
+  size_t n = 0;
+  for (size_t i = 0; i < e.size(); ++i) {
+    if (!e.valid(i) || !where(e.position[i], e.normal[i])) continue;
+    for (int c = 0; c < 3; ++c) sum[c] += double(r.irradiance[i][c]) * e.area[i];
+    area += e.area[i];
+    ++n;
+  }
+  if (count) *count = n;
+  if (area <= 0) return {0, 0, 0};
+  return {float(sum[0] / area), float(sum[1] / area), float(sum[2] / area)};
+}
+
+}  // namespace radbake::test

@@ -1,0 +1,37 @@
+// Scenes built in code for the tests: plain Scene data, as io/ would produce it from glTF.
+#pragma once
+
+#include <functional>
+#include <string>
+
+#include "baker/bake.h"
+#include "baker/scene.h"
+#include "uv/atlas.h"
+
+namespace radbake::test {
+
+std::string source_path(const std::string& relative);  // inside the repository
+
+int add_material(Scene& scene, Rgb base_color, Rgb emissive = {0, 0, 0}, float emissive_strength = 1.0f);
+
+// A quad corner, corner + u, corner + u + v, corner + v (two triangles); its front faces u x v.
+void add_quad(Scene& scene, Vec3 corner, Vec3 u, Vec3 v, int material, const std::string& name = "quad");
+
+// Six quads of an axis-aligned box facing inward (a room) or outward (a block); material per face
+// in the order -x, +x, -y, +y, -z, +z.
+void add_box(Scene& scene, Vec3 lo, Vec3 hi, bool inward, const int (&materials)[6], const std::string& name = "box");
+void add_box(Scene& scene, Vec3 lo, Vec3 hi, bool inward, int material, const std::string& name = "box");
+
+Atlas unwrap(const Scene& scene, const AtlasOptions& options);
+
+struct Baked {
+  Atlas atlas;
+  BakeResult result;
+};
+Baked bake_scene(const Scene& scene, const AtlasOptions& atlas_options, const BakeOptions& options);
+
+// Area-weighted mean irradiance (lux) over valid elements whose sample point and normal pass `where`.
+Rgb mean_irradiance(const BakeResult& r, const std::function<bool(Vec3 position, Vec3 normal)>& where,
+                    size_t* count = nullptr);
+
+}  // namespace radbake::test
