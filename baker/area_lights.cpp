@@ -116,10 +116,16 @@ std::vector<Rgb> emitter_irradiance(const Elements& e, const Surface& surface, c
         for (int j = 0; j < rays; ++j) {
           Vec3 y = polygon_point(clipped[k].data(), clipped_count[k], cmj_sample(uint32_t(j), uint32_t(rays), target_pattern));
           Vec3 origin = footprint_point(e, surface, i, cmj_sample(uint32_t(j), uint32_t(rays), origin_pattern)) + ng * e.offset[i];
-          Vec3 d = y - origin;
+          // The ray ends just off the emitter, on the receiver's side: stopping a fraction short
+          // along the ray is not enough at grazing angles, where that point is still within
+          // rounding of the emitter's plane and the emitter would occlude itself.
+          Vec3 target = y + em.normal * std::max(e.offset[i], 1e-5f * length(y - origin));
+          Vec3 d = target - origin;
           float dist = length(d);
-          if (!(dist > 0) || dot(d, ng) <= 0) continue;
-          if (tracer.occluded(origin, d / dist, 0.0f, dist * (1 - 1e-4f))) continue;
+          // A target within the ray offset of the receiver's own plane (an emitter meeting it at
+          // an edge) is in plain view; a ray there would only graze the receiver itself.
+          bool grazing = !(dist > 0) || dot(d, ng) <= 0;
+          if (!grazing && tracer.occluded(origin, d / dist, 0.0f, dist)) continue;
           visible += em.uniform ? em.emission : materials.emission(em.triangle, triangle_bary(em, y), 1.0f);
         }
         h += visible * float(factor[k] / rays);

@@ -62,24 +62,33 @@ BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& optio
     return 0;
   });
   Patches patches = clock.run("patches", [&] { return build_patches(elements, surface, options.patches); });
+  if (patches.members.empty())
+    throw InputError("no lightmap texel covers a visible surface: raise the texel density or the page size");
 
-  result.punctual = clock.run("punctual lights", [&] {
+  std::vector<Rgb> punctual = clock.run("punctual lights", [&] {
     return punctual_irradiance(elements, surface, scene.lights, *tracer, options.direct, options.seed, progress);
   });
-  result.area_lights = clock.run("area lights", [&] {
+  result.direct = clock.run("area lights", [&] {
     return emitter_irradiance(elements, surface, materials, *tracer, options.direct, options.seed, progress);
   });
+  double punctual_power = 0;  // lm, mean of RGB, landing on valid elements
+  for (size_t i = 0; i < elements.size(); ++i) {
+    if (elements.valid(i)) punctual_power += double(sum(punctual[i])) / 3.0 * elements.area[i];
+    result.direct[i] += punctual[i];
+  }
+  punctual = {};
+
   std::vector<Rgb> patch_direct(patches.size());
   std::vector<double> first_bounce_power(patches.size());
   for (size_t p = 0; p < patches.size(); ++p) {
-    Rgb sum{};
+    Rgb total{};
     for (uint32_t k = patches.first_member[p]; k < patches.first_member[p + 1]; ++k) {
       uint32_t i = patches.members[k];
-      sum += (result.punctual[i] + result.area_lights[i]) * elements.area[i];
+      total += result.direct[i] * elements.area[i];
     }
-    patch_direct[p] = patches.area[p] > 0 ? sum / patches.area[p] : Rgb{};
+    patch_direct[p] = patches.area[p] > 0 ? total / patches.area[p] : Rgb{};
     Rgb leaving = patches.emission[p] + patches.reflectance[p] * patch_direct[p];
-    first_bounce_power[p] = double(radbake::sum(leaving)) * patches.area[p];
+    first_bounce_power[p] = double(sum(leaving)) * patches.area[p];
   }
   PatchTransport transport = clock.run("form factors", [&] {
     return trace_patch_transport(elements, patches, surface, *tracer, options.patch_rays, first_bounce_power,
@@ -88,25 +97,24 @@ BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& optio
   RadiositySolution solution =
       clock.run("radiosity", [&] { return solve_radiosity(patches, transport, patch_direct, options.solve, progress); });
   GatherStats gather_stats;
-  result.indirect = clock.run("final gather", [&] {
+  result.irradiance = clock.run("final gather", [&] {
     return gather_indirect(elements, patches, surface, *tracer, solution.exitance, options.gather_rays, options.seed,
                            progress, &gather_stats);
   });
 
   const size_t n = elements.size();
-  result.irradiance.resize(n);
-  std::vector<Rgb> stored(n);
-  for (size_t i = 0; i < n; ++i) {
-    result.irradiance[i] = result.punctual[i] + result.area_lights[i] + result.indirect[i];
-    stored[i] = options.store == StoredQuantity::Irradiance
-                    ? result.irradiance[i]
-                    : elements.emission[i] + elements.reflectance[i] * result.irradiance[i];
+  for (size_t i = 0; i < n; ++i) result.irradiance[i] += result.direct[i];
+  std::vector<Rgb> radiosity;
+  if (options.store == StoredQuantity::Radiosity) {
+    radiosity.resize(n);
+    for (size_t i = 0; i < n; ++i) radiosity[i] = elements.emission[i] + elements.reflectance[i] * result.irradiance[i];
   }
+  const std::vector<Rgb>& stored = radiosity.empty() ? result.irradiance : radiosity;
   result.pages = clock.run("dilation", [&] { return compose_pages(elements, stored, surface.pages); });
   result.vertex_values =
       clock.run("vertex values", [&] { return vertex_values(elements, surface, atlas, result.pages, stored); });
 
-  report.balance = energy_balance(elements, patches, transport, solution.exitance, result.punctual, result.irradiance);
+  report.balance = energy_balance(elements, patches, transport, solution.exitance, punctual_power, result.irradiance);
   for (const AtlasPage& p : surface.pages) report.page_texels += size_t(p.width) * p.height;
   report.elements = n;
   for (size_t i = 0; i < n; ++i) {

@@ -61,7 +61,7 @@ struct BakeResult {
   std::vector<std::vector<Rgb>> vertex_values;     // per instance, per atlas output vertex
   Elements elements;                               // kept for reports, tests and debug dumps
   std::vector<Rgb> irradiance;                     // per element, lux
-  std::vector<Rgb> punctual, area_lights, indirect;  // its parts, lux
+  std::vector<Rgb> direct;                         // its direct part (lights and emitting surfaces), lux
   std::vector<uint32_t> patch_of_element;          // UINT32_MAX for buried elements
   BakeReport report;
 };

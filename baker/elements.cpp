@@ -55,7 +55,10 @@ Elements build_elements(const Surface& surface, const MaterialSampler& materials
     progress.advance(r.size());
   });
   std::vector<Piece> pieces;
-  for (auto& v : pieces_of) pieces.insert(pieces.end(), v.begin(), v.end());
+  for (auto& v : pieces_of) {
+    pieces.insert(pieces.end(), v.begin(), v.end());
+    v = {};
+  }
   pieces_of = {};
   std::sort(pieces.begin(), pieces.end(), [](const Piece& a, const Piece& b) {
     return a.page != b.page ? a.page < b.page : a.texel != b.texel ? a.texel < b.texel : a.triangle < b.triangle;
@@ -183,7 +186,11 @@ Vec3 footprint_point(const Elements& elements, const Surface& surface, size_t i,
   Vec3 p;
   if (!(elements.visible_cells[i] >> cell & 1) || !footprint_surface_point(elements, surface, i, u, p))
     return elements.position[i];
-  return p;
+  // A point on the chart's very edge can lie in the plane of a wall standing there, where a ray
+  // may slip through the wall; pulled a little toward the sample point, it is clear of it.
+  Vec3 inward = elements.position[i] - p;
+  float gap = length(inward), pull = 2 * elements.offset[i];
+  return gap > pull ? p + inward * (pull / gap) : elements.position[i];
 }
 
 }  // namespace radbake

@@ -6,12 +6,13 @@ double mean(Rgb v) { return (double(v.x) + v.y + v.z) / 3.0; }
 }  // namespace
 
 EnergyBalance energy_balance(const Elements& e, const Patches& patches, const PatchTransport& transport,
-                             const std::vector<Rgb>& patch_reflected_exitance, const std::vector<Rgb>& punctual,
+                             const std::vector<Rgb>& patch_reflected_exitance, double punctual_power,
                              const std::vector<Rgb>& irradiance) {
   EnergyBalance b;
+  b.emitted = punctual_power;
   for (size_t i = 0; i < e.size(); ++i) {
     if (!e.valid(i)) continue;
-    b.emitted += (mean(e.emission[i]) + mean(punctual[i])) * e.area[i];
+    b.emitted += mean(e.emission[i]) * e.area[i];
     Rgb absorbed = (Rgb{1, 1, 1} - e.reflectance[i]) * irradiance[i];
     b.absorbed += mean(absorbed) * e.area[i];
   }

@@ -21,7 +21,7 @@ struct EnergyBalance {
 };
 
 EnergyBalance energy_balance(const Elements& elements, const Patches& patches, const PatchTransport& transport,
-                             const std::vector<Rgb>& patch_reflected_exitance, const std::vector<Rgb>& punctual,
+                             const std::vector<Rgb>& patch_reflected_exitance, double punctual_power,
                              const std::vector<Rgb>& irradiance);
 
 }  // namespace radbake

@@ -4,6 +4,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "baker/sampling.h"
 
@@ -17,6 +18,57 @@ uint32_t patch_hit(const Elements& elements, const Patches& patches, const Surfa
   int64_t element = element_at_point(elements, surface, hit.triangle, hit.bary);
   return element < 0 ? UINT32_MAX : patches.patch_of_element[size_t(element)];
 }
+
+namespace {
+
+// Monte Carlo rows sum exactly to what lands, but columns (what each patch receives) carry the
+// noise of everyone else's rays, so even a closed box of equal patches solves to radiosities a
+// few percent apart. Reciprocity (A_p F_pq = A_q F_qp) fixes that: the power exchange matrix
+// G = A F is made symmetric, then scaled as D G D (Knight's symmetric Sinkhorn) until every row
+// again sums to what its rays measured landing. Rows and columns then both add up, so light is
+// conserved and a furnace comes out uniform.
+void balance_reciprocity(const Patches& patches, std::vector<std::vector<std::pair<uint32_t, float>>>& rows) {
+  const size_t n = rows.size();
+  std::vector<double> target(n, 0);
+  std::vector<std::vector<std::pair<uint32_t, double>>> g(n);
+  for (size_t p = 0; p < n; ++p)
+    for (auto [q, f] : rows[p]) {
+      double half = 0.5 * double(patches.area[p]) * f;
+      target[p] += 2 * half;
+      g[p].emplace_back(q, half);
+      g[q].emplace_back(uint32_t(p), half);
+    }
+  for (auto& row : g) {  // merge the two halves of each pair
+    std::sort(row.begin(), row.end());
+    size_t w = 0;
+    for (size_t k = 0; k < row.size(); ++k) {
+      if (w > 0 && row[w - 1].first == row[k].first) row[w - 1].second += row[k].second;
+      else row[w++] = row[k];
+    }
+    row.resize(w);
+  }
+  std::vector<double> d(n, 1.0);
+  for (int iteration = 0; iteration < 500; ++iteration) {
+    double worst = 0;
+    for (size_t p = 0; p < n; ++p) {
+      if (target[p] <= 0) continue;
+      double sum = 0;
+      for (auto [q, v] : g[p]) sum += v * d[q];
+      double r = d[p] * sum;
+      if (r <= 0) continue;
+      worst = std::max(worst, std::fabs(r / target[p] - 1));
+      d[p] *= std::sqrt(target[p] / r);
+    }
+    if (worst < 1e-7) break;
+  }
+  for (size_t p = 0; p < n; ++p) {
+    rows[p].clear();
+    if (target[p] <= 0 || patches.area[p] <= 0) continue;
+    for (auto [q, v] : g[p]) rows[p].emplace_back(q, float(d[p] * v * d[q] / patches.area[p]));
+  }
+}
+
+}  // namespace
 
 PatchTransport trace_patch_transport(const Elements& elements, const Patches& patches, const Surface& surface,
                                      const RayTracer& tracer, uint32_t rays_per_patch,
@@ -90,6 +142,7 @@ PatchTransport trace_patch_transport(const Elements& elements, const Patches& pa
   });
   progress.end();
 
+  balance_reciprocity(patches, rows);
   out.row_start.assign(patch_count + 1, 0);
   for (size_t p = 0; p < patch_count; ++p) out.row_start[p + 1] = out.row_start[p] + rows[p].size();
   out.target.reserve(out.row_start.back());

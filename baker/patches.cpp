@@ -37,8 +37,10 @@ size_t distinct_keys(const std::vector<Keyed>& keys) {
 Patches build_patches(const Elements& e, const Surface& surface, const PatchOptions& options) {
   int block = options.block_size > 0 ? options.block_size : 1;
   std::vector<Keyed> keys = block_keys(e, surface, block);
+  const size_t max_patches =
+      options.max_patches > 0 ? options.max_patches : std::clamp<size_t>(keys.size() / 32, 64, 4096);
   // Pages are at most 16384 texels, so blocks stay under 2^16 per side in the key.
-  while (options.block_size <= 0 && distinct_keys(keys) > options.max_patches && block < 16384) {
+  while (options.block_size <= 0 && distinct_keys(keys) > max_patches && block < 16384) {
     block *= 2;
     keys = block_keys(e, surface, block);
   }

@@ -23,8 +23,9 @@ struct Patches {
 };
 
 struct PatchOptions {
-  int block_size = 0;        // texels per patch side; 0 picks the smallest power of two that keeps
-  size_t max_patches = 4096;  // the patch count at or under this
+  int block_size = 0;       // texels per patch side; 0 picks the smallest power of two that keeps
+  size_t max_patches = 0;   // the patch count at or under this; 0: one patch per 32 elements,
+                            // between 64 and 4096, so form factor rays cost about what the gather does
 };
 
 Patches build_patches(const Elements& elements, const Surface& surface, const PatchOptions& options);

@@ -11,9 +11,9 @@ std::vector<std::string> write_debug_dumps(const BakeResult& r, const std::vecto
                                            const std::string& folder, const std::string& name) {
   const Elements& e = r.elements;
   const size_t n = e.size();
-  std::vector<Rgb> direct(n), normals(n), flags(n), patch_colour(n);
+  std::vector<Rgb> indirect(n), normals(n), flags(n), patch_colour(n);
   for (size_t i = 0; i < n; ++i) {
-    direct[i] = r.punctual[i] + r.area_lights[i];
+    indirect[i] = r.irradiance[i] - r.direct[i];
     normals[i] = e.normal[i] * 0.5f + Rgb{0.5f, 0.5f, 0.5f};
     flags[i] = {(e.flags[i] & kBuried) ? 1.0f : 0.0f, (e.flags[i] & kPushedOut) ? 1.0f : 0.0f,
                 (e.flags[i] & kNearGeometry) ? 1.0f : 0.0f};
@@ -21,9 +21,9 @@ std::vector<std::string> write_debug_dumps(const BakeResult& r, const std::vecto
     patch_colour[i] = {float(h & 255) / 255, float((h >> 8) & 255) / 255, float((h >> 16) & 255) / 255};
   }
   std::vector<std::pair<std::string, const std::vector<Rgb>*>> dumps = {
-      {"irradiance", &r.irradiance}, {"direct", &direct},          {"indirect", &r.indirect},
-      {"punctual", &r.punctual},     {"area_lights", &r.area_lights}, {"reflectance", &e.reflectance},
-      {"emission", &e.emission},     {"normals", &normals},        {"patches", &patch_colour}};
+      {"irradiance", &r.irradiance}, {"direct", &r.direct},   {"indirect", &indirect},
+      {"reflectance", &e.reflectance}, {"emission", &e.emission}, {"normals", &normals},
+      {"patches", &patch_colour}};
   std::filesystem::path dir = std::filesystem::path(folder) / "debug";
   std::filesystem::create_directories(dir);
   std::vector<std::string> written;

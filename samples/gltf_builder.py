@@ -7,6 +7,7 @@ import base64
 import json
 import math
 import struct
+import zlib
 
 
 def sub(a, b):
@@ -64,6 +65,17 @@ def box_faces(centre, size, rotation_y=0.0):
     return {k: facing_away(v, centre) for k, v in faces.items()}
 
 
+def png_bytes(width, height, pixel):
+    """An RGB 8-bit PNG; pixel(x, y) returns (r, g, b) in 0..255."""
+    raw = b"".join(b"\0" + bytes(c for x in range(width) for c in pixel(x, y)) for y in range(height))
+
+    def chunk(kind, data):
+        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data) & 0xffffffff)
+
+    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0)) +
+            chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b""))
+
+
 class Gltf:
     def __init__(self, generator="radbake samples"):
         self.doc = {"asset": {"version": "2.0", "generator": generator}, "scene": 0,
@@ -117,9 +129,10 @@ class Gltf:
         self.doc.setdefault("textures", []).append({"source": len(self.doc["images"]) - 1})
         return len(self.doc["textures"]) - 1
 
-    def mesh(self, name, polygons, material, uvs=None):
-        """A mesh of flat polygons (each a list of 3+ points, fanned); uvs, if given, per polygon."""
-        positions, normals, texcoords, indices = [], [], [], []
+    def mesh(self, name, polygons, material, uvs=None, lightmap_uvs=None):
+        """A mesh of flat polygons (each a list of 3+ points, fanned); uvs (TEXCOORD_0) and
+        lightmap_uvs (TEXCOORD_1), if given, per polygon."""
+        positions, normals, texcoords, lightmap, indices = [], [], [], [], []
         for p, poly in enumerate(polygons):
             n = polygon_normal(poly)
             base = len(positions)
@@ -127,20 +140,42 @@ class Gltf:
             normals.extend([n] * len(poly))
             if uvs is not None:
                 texcoords.extend(uvs[p])
+            if lightmap_uvs is not None:
+                lightmap.extend(lightmap_uvs[p])
             for i in range(1, len(poly) - 1):
                 indices.extend([base, base + i, base + i + 1])
         attributes = {"POSITION": self.accessor(positions, "VEC3", bounds=True),
                       "NORMAL": self.accessor(normals, "VEC3")}
         if uvs is not None:
             attributes["TEXCOORD_0"] = self.accessor(texcoords, "VEC2")
+        if lightmap_uvs is not None:
+            attributes["TEXCOORD_1"] = self.accessor(lightmap, "VEC2")
+            attributes.setdefault("TEXCOORD_0", attributes["TEXCOORD_1"])
         index_type = 5123 if len(positions) < 65536 else 5125
         primitive = {"attributes": attributes, "indices": self.accessor(indices, "SCALAR", index_type, 34963),
                      "material": material}
         self.doc["meshes"].append({"name": name, "primitives": [primitive]})
         return len(self.doc["meshes"]) - 1
 
-    def node(self, name, mesh=None, translation=None, rotation=None, scale=None, extensions=None, camera=None):
+    def primitive_mesh(self, name, positions, material, indices=None, index_type=5123, mode=None, extra=None):
+        """A one-primitive mesh from raw positions and optional indices of a given component type."""
+        attributes = {"POSITION": self.accessor(positions, "VEC3", bounds=True)}
+        primitive = {"attributes": attributes, "material": material}
+        if indices is not None:
+            primitive["indices"] = self.accessor(indices, "SCALAR", index_type, 34963)
+        if mode is not None:
+            primitive["mode"] = mode
+        prims = [primitive] + (extra or [])
+        self.doc["meshes"].append({"name": name, "primitives": prims})
+        return len(self.doc["meshes"]) - 1
+
+    def node(self, name, mesh=None, translation=None, rotation=None, scale=None, extensions=None, camera=None,
+             matrix=None, children=None, root=True):
         n = {"name": name}
+        if matrix is not None:
+            n["matrix"] = list(matrix)
+        if children:
+            n["children"] = list(children)
         if mesh is not None:
             n["mesh"] = mesh
         if camera is not None:
@@ -154,7 +189,8 @@ class Gltf:
         if extensions:
             n["extensions"] = extensions
         self.doc["nodes"].append(n)
-        self.doc["scenes"][0]["nodes"].append(len(self.doc["nodes"]) - 1)
+        if root:
+            self.doc["scenes"][0]["nodes"].append(len(self.doc["nodes"]) - 1)
         return len(self.doc["nodes"]) - 1
 
     def light(self, name, kind, intensity, color=(1, 1, 1), range_m=None, inner=None, outer=None):
@@ -179,7 +215,12 @@ class Gltf:
         doc = dict(self.doc)
         if self.extensions:
             doc["extensionsUsed"] = sorted(self.extensions)
-        if bin_name:
+        if not self.data:
+            doc.pop("buffers")
+            for key in ("accessors", "bufferViews", "meshes", "materials"):
+                if not doc[key]:
+                    doc.pop(key)
+        elif bin_name:
             doc["buffers"] = [{"uri": bin_name, "byteLength": len(self.data)}]
             with open(path.rsplit("/", 1)[0] + "/" + bin_name if "/" in path else bin_name, "wb") as f:
                 f.write(self.data)

@@ -103,9 +103,8 @@ Atlas ensure_lightmap_uvs(const std::vector<MeshView>& meshes, const AtlasOption
   for (const MeshView& m : meshes) total_area += world_area(m);
   // Auto density aims for 60% of one page: what the shelf packer reaches on box-like scenes.
   const float auto_fill = 0.6f;
-  float density = options.texel_density > 0
-                      ? options.texel_density
-                      : float(page_size * std::sqrt(auto_fill / std::max(total_area, 1e-12)));
+  const float auto_density = float(page_size * std::sqrt(auto_fill / std::max(total_area, 1e-12)));
+  float density = options.texel_density > 0 ? options.texel_density : auto_density;
 
   std::vector<int> own_page_side(meshes.size(), 0);
   std::vector<Chart> charts;
@@ -124,10 +123,18 @@ Atlas ensure_lightmap_uvs(const std::vector<MeshView>& meshes, const AtlasOption
   }
 
   PackResult packed = pack_charts(charts, meshes.size(), density, page_size, options.padding);
-  // Auto density backs off until everything generated fits the one page it promised.
-  while (options.texel_density <= 0 && packed.pages.size() > 1) {
+  // Auto density backs off until everything generated fits the one page it promised; when even
+  // one-texel charts cannot share a page (more charts than the page has room for), it gives up
+  // on one page rather than shrinking forever.
+  for (int attempt = 0; options.texel_density <= 0 && packed.pages.size() > 1 && attempt < 200; ++attempt) {
     density *= 0.95f;
     packed = pack_charts(charts, meshes.size(), density, page_size, options.padding);
+  }
+  if (options.texel_density <= 0 && packed.pages.size() > 1) {
+    density = auto_density;
+    packed = pack_charts(charts, meshes.size(), density, page_size, options.padding);
+    atlas.warnings.push_back("the charts do not fit one " + std::to_string(page_size) + "-texel page at any density; using " +
+                             std::to_string(packed.pages.size()) + " pages");
   }
   atlas.texel_density = density;
   atlas.pages = packed.pages;

@@ -1,0 +1,52 @@
+// An emitting surface as an area light, in radbake's unit convention: glTF emission is luminance
+// in cd/m2, a Lambertian emitter of luminance L has exitance pi L, and the irradiance it gives a
+// point is pi L times the point-to-surface form factor (Howell B-3 for a rectangle).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "baker/material_sampler.h"
+#include "support/scene_builders.h"
+
+namespace radbake {
+namespace {
+
+double corner_point_to_rectangle(double a, double b, double c) {
+  double A = a / c, B = b / c;
+  return (A / std::sqrt(1 + A * A) * std::atan(B / std::sqrt(1 + A * A)) +
+          B / std::sqrt(1 + B * B) * std::atan(A / std::sqrt(1 + B * B))) /
+         (2 * M_PI);
+}
+
+// Sums the four corner rectangles a point under a rectangle [x0,x1] x [z0,z1] splits it into.
+double point_to_rectangle(double px, double pz, double x0, double x1, double z0, double z1, double h) {
+  double f = 0;
+  for (double w : {x1 - px, px - x0})
+    for (double d : {z1 - pz, pz - z0}) f += corner_point_to_rectangle(w, d, h);
+  return f;
+}
+
+TEST(AreaLight, EmittingSquareGivesPiTimesLuminanceTimesFormFactor) {
+  Scene scene;
+  int black = test::add_material(scene, {0, 0, 0});
+  const float luminance = 1000;  // cd/m2
+  int lamp = test::add_material(scene, {0, 0, 0}, {1, 1, 1}, luminance);
+  test::add_quad(scene, {-3, 0, 3}, {6, 0, 0}, {0, 0, -6}, black);              // floor, faces +y
+  test::add_quad(scene, {-0.5f, 1, -0.5f}, {1, 0, 0}, {0, 0, 1}, lamp);         // 1 m square at 1 m, faces -y
+  test::Baked b = test::bake_scene(scene, {32.0f, 512, 2}, {});
+  const Elements& e = b.result.elements;
+  size_t checked = 0;
+  for (size_t i = 0; i < e.size(); ++i) {
+    if (!e.valid(i) || e.normal[i].y < 0.9f || (i % 97) != 0) continue;
+    Vec3 x = e.position[i];
+    double expected = kExitancePerEmissiveUnit * luminance * point_to_rectangle(x.x, x.z, -0.5, 0.5, -0.5, 0.5, 1.0);
+    // 1% of the value under the lamp's centre: the texel averages over its footprint.
+    EXPECT_NEAR(b.result.irradiance[i].x, expected, 0.01 * kExitancePerEmissiveUnit * luminance * 0.5)
+        << "at " << x.x << ", " << x.z;
+    ++checked;
+  }
+  EXPECT_GT(checked, 200u);
+}
+
+}  // namespace
+}  // namespace radbake
