@@ -18,6 +18,8 @@ enum ElementFlags : uint8_t {
   kPushedOut = 1,     // the texel centre was behind nearby geometry; the sample moved in front of it
   kNearGeometry = 2,  // other geometry crosses the footprint: rays start only where the sample sees
   kBuried = 4,        // the sample sees mostly back faces: it is inside geometry, valued by dilation
+  kJoinsRight = 8,    // the element to the right (same chart) is on the same side of all geometry
+  kJoinsDown = 16,    // likewise the element below; patches only grow across these joins
 };
 
 struct Elements {
@@ -51,7 +53,8 @@ Elements build_elements(const Surface& surface, const MaterialSampler& materials
                         Progress& progress);
 
 // Moves samples that sit behind nearby geometry (a floor texel straddling a wall) to its front,
-// and flags samples buried inside closed geometry, so neither leaks light nor shadow.
+// flags samples buried inside closed geometry, and records which neighbouring texels are not
+// separated by geometry, so no light or shadow leaks through a wall standing on a surface.
 void place_samples(Elements& elements, const Surface& surface, const RayTracer& tracer, uint64_t seed,
                    Progress& progress);
 

@@ -10,12 +10,46 @@
 
 namespace radbake {
 
+namespace {
+
+bool sees(const RayTracer& tracer, Vec3 from, Vec3 to) {
+  Vec3 d = to - from;
+  float dist = length(d);
+  return !(dist > 0) || !tracer.occluded(from, d / dist, 0.0f, dist);
+}
+
+// The element that stands for a hit point. Where a wall crosses a texel, the texel's element
+// lies on one side only; a hit on the other side belongs to the neighbour on its own side (or to
+// nobody), never to the element behind the wall, or light would pass through the wall.
+int64_t element_for_hit(const Elements& e, const Surface& surface, const RayTracer& tracer, const Hit& hit) {
+  int64_t j = element_at_point(e, surface, hit.triangle, hit.bary);
+  if (j < 0 || !(e.flags[size_t(j)] & kNearGeometry)) return j;
+  const Vec3 ng = surface.normal[hit.triangle];
+  const Vec3 at = surface.point(hit.triangle, hit.bary) + ng * e.offset[size_t(j)];
+  auto lifted = [&](size_t k) { return e.position[k] + surface.normal[e.triangle[k]] * e.offset[k]; };
+  if (sees(tracer, at, lifted(size_t(j)))) return j;
+  const uint32_t width = uint32_t(surface.pages[e.page[size_t(j)]].width);
+  const std::vector<int32_t>& grid = e.element_at[e.page[size_t(j)]];
+  const int64_t x = e.texel[size_t(j)] % width, y = e.texel[size_t(j)] / width, height = int64_t(grid.size() / width);
+  for (int64_t dy = -1; dy <= 1; ++dy)
+    for (int64_t dx = -1; dx <= 1; ++dx) {
+      if ((dx == 0 && dy == 0) || x + dx < 0 || y + dy < 0 || x + dx >= width || y + dy >= height) continue;
+      int32_t k = grid[size_t((y + dy) * width + x + dx)];
+      if (k >= 0 && e.valid(size_t(k)) && surface.chart[e.triangle[size_t(k)]] == surface.chart[hit.triangle] &&
+          sees(tracer, at, lifted(size_t(k))))
+        return k;
+    }
+  return -1;
+}
+
+}  // namespace
+
 uint32_t patch_hit(const Elements& elements, const Patches& patches, const Surface& surface,
                    const RayTracer& tracer, Vec3 origin, Vec3 direction, bool& escaped) {
   Hit hit = tracer.intersect(origin, direction, 0.0f, INFINITY);
   escaped = hit.missed();
   if (escaped || !hit.front) return UINT32_MAX;
-  int64_t element = element_at_point(elements, surface, hit.triangle, hit.bary);
+  int64_t element = element_for_hit(elements, surface, tracer, hit);
   return element < 0 ? UINT32_MAX : patches.patch_of_element[size_t(element)];
 }
 

@@ -32,6 +32,48 @@ size_t distinct_keys(const std::vector<Keyed>& keys) {
   return count;
 }
 
+// A block that a wall crosses holds texels from both sides; mixing them would carry one side's
+// light to the other. Each block is cut into the groups its elements' joins connect, and every
+// group gets a key of its own (the block key plus the group's number in the top bits).
+void split_at_walls(const Elements& e, const Surface& surface, std::vector<Keyed>& keys) {
+  std::vector<uint32_t> local(e.size(), UINT32_MAX), parent;
+  auto find = [&](uint32_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  for (size_t begin = 0; begin < keys.size();) {
+    size_t end = begin;
+    while (end < keys.size() && keys[end].key == keys[begin].key) ++end;
+    parent.resize(end - begin);
+    for (size_t k = begin; k < end; ++k) {
+      local[keys[k].element] = uint32_t(k - begin);
+      parent[k - begin] = uint32_t(k - begin);
+    }
+    for (size_t k = begin; k < end; ++k) {
+      uint32_t i = keys[k].element;
+      uint32_t width = uint32_t(surface.pages[e.page[i]].width);
+      const std::vector<int32_t>& at = e.element_at[e.page[i]];
+      for (auto [bit, step] : {std::pair<uint8_t, uint32_t>{kJoinsRight, 1}, {kJoinsDown, width}}) {
+        if (!(e.flags[i] & bit)) continue;
+        int32_t j = at[e.texel[i] + step];
+        if (j >= 0 && local[size_t(j)] != UINT32_MAX) parent[find(local[i])] = find(local[size_t(j)]);
+      }
+    }
+    std::vector<uint32_t> group_of_root(end - begin, UINT32_MAX);
+    uint32_t groups = 0;
+    for (size_t k = begin; k < end; ++k) {
+      uint32_t root = find(uint32_t(k - begin));
+      if (group_of_root[root] == UINT32_MAX) group_of_root[root] = groups++;
+      keys[k].key |= uint64_t(group_of_root[root]) << 58;  // chart ids stay far below 2^26
+    }
+    for (size_t k = begin; k < end; ++k) local[keys[k].element] = UINT32_MAX;
+    begin = end;
+  }
+  std::sort(keys.begin(), keys.end(), [](const Keyed& a, const Keyed& b) {
+    return a.key != b.key ? a.key < b.key : a.element < b.element;
+  });
+}
+
 }  // namespace
 
 Patches build_patches(const Elements& e, const Surface& surface, const PatchOptions& options) {
@@ -44,6 +86,8 @@ Patches build_patches(const Elements& e, const Surface& surface, const PatchOpti
     block *= 2;
     keys = block_keys(e, surface, block);
   }
+
+  split_at_walls(e, surface, keys);
 
   Patches p;
   p.block_size = block;

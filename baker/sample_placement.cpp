@@ -89,6 +89,34 @@ void place_samples(Elements& e, const Surface& surface, const RayTracer& tracer,
     }
     progress.advance(r.size());
   });
+
+  // Joins to the right and lower neighbours, once every sample has its final place. Only texels
+  // near geometry can have a wall between them and a neighbour; the rest join without a ray.
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 512), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t i = r.begin(); i < r.end(); ++i) {
+      if (!e.valid(i)) continue;
+      const uint32_t width = uint32_t(surface.pages[e.page[i]].width);
+      const uint32_t x = e.texel[i] % width, y = e.texel[i] / width;
+      const std::vector<int32_t>& at = e.element_at[e.page[i]];
+      const size_t height = at.size() / width;
+      const uint8_t bits[2] = {kJoinsRight, kJoinsDown};
+      for (int k = 0; k < 2; ++k) {
+        uint32_t nx = x + (k == 0), ny = y + (k == 1);
+        if (nx >= width || ny >= height) continue;
+        int32_t j = at[size_t(ny) * width + nx];
+        if (j < 0 || !e.valid(size_t(j)) || surface.chart[e.triangle[size_t(j)]] != surface.chart[e.triangle[i]]) continue;
+        bool joined = true;
+        if ((e.flags[i] | e.flags[size_t(j)]) & kNearGeometry) {
+          Vec3 from = e.position[i] + surface.normal[e.triangle[i]] * e.offset[i];
+          Vec3 to = e.position[size_t(j)] + surface.normal[e.triangle[size_t(j)]] * e.offset[size_t(j)];
+          Vec3 d = to - from;
+          float dist = length(d);
+          joined = !(dist > 0) || !tracer.occluded(from, d / dist, 0.0f, dist);
+        }
+        if (joined) e.flags[i] |= bits[k];
+      }
+    }
+  });
   progress.end();
 }
 
