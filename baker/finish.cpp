@@ -112,7 +112,7 @@ std::vector<std::vector<Rgb>> vertex_values(const Elements& e, const Surface& su
       Vec2 p{mesh.uvs[v].x * page.width, mesh.uvs[v].y * page.height};
       Rgb value{};
       bool found = false;
-      for (float radius : {1.5f, 3.0f, 6.0f}) {
+      for (float radius : {2.0f, 3.0f, 6.0f}) {
         samples.clear();
         sample_values.clear();
         Rgb highest{};
@@ -128,7 +128,8 @@ std::vector<std::vector<Rgb>> vertex_values(const Elements& e, const Surface& su
             sample_values.push_back(values[size_t(i)]);
             for (int c = 0; c < 3; ++c) highest[c] = std::max(highest[c], values[size_t(i)][c]);
           }
-        if (samples.empty()) continue;
+        // A corner vertex has few texels around it: widen the search before settling for a mean.
+        if (samples.empty() || (samples.size() < 3 && radius < 6.0f)) continue;
         if (!fit_plane(samples, sample_values, value)) {
           double weight = 0;
           value = {};
