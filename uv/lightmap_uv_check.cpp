@@ -66,22 +66,29 @@ std::string lightmap_uv_problem(const MeshView& mesh, int resolution) {
   }
   if (flat_in_uv) return "TEXCOORD_1 gives " + std::to_string(flat_in_uv) + " triangles no area";
 
+  // Texels may be shared by the triangles of one chart (they meet inside them), never by two
+  // charts; and the pieces in one texel may not add up to more than the texel (a fold).
   std::vector<uint32_t> chart = uv_charts(mesh);
   std::vector<int64_t> owner(size_t(resolution) * resolution, -1);
-  size_t shared_texels = 0;
+  std::vector<float> covered(owner.size(), 0.0f);
+  size_t shared_texels = 0, folded_texels = 0;
   auto texel = [&](Vec2 uv) { return Vec2{uv.x * resolution, uv.y * resolution}; };
   for (size_t t = 0; t < mesh.triangle_count; ++t) {
     const uint32_t* tri = mesh.triangles + 3 * t;
     for_each_covered_texel(texel(mesh.lightmap_uvs[tri[0]]), texel(mesh.lightmap_uvs[tri[1]]),
                            texel(mesh.lightmap_uvs[tri[2]]), resolution, resolution, [&](const TexelPiece& piece) {
-                             int64_t& o = owner[size_t(piece.y) * resolution + piece.x];
+                             size_t at = size_t(piece.y) * resolution + piece.x;
+                             int64_t& o = owner[at];
                              if (o < 0) o = chart[t];
                              else if (o != chart[t] && o != INT64_MAX) o = INT64_MAX, ++shared_texels;
+                             float before = covered[at];
+                             covered[at] += piece.area;
+                             folded_texels += before <= 1.01f && covered[at] > 1.01f;
                            });
   }
-  if (shared_texels)
-    return "TEXCOORD_1 charts overlap or touch in " + std::to_string(shared_texels) + " texels at " +
-           std::to_string(resolution) + "x" + std::to_string(resolution);
+  std::string at = " at " + std::to_string(resolution) + "x" + std::to_string(resolution);
+  if (shared_texels) return "TEXCOORD_1 charts overlap or touch in " + std::to_string(shared_texels) + " texels" + at;
+  if (folded_texels) return "TEXCOORD_1 folds over itself in " + std::to_string(folded_texels) + " texels" + at;
   return "";
 }
 
