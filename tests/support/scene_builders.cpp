@@ -1,5 +1,13 @@
 #include "support/scene_builders.h"
 
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "io/gltf.h"
+#include "io/lightmap_images.h"
+
 namespace radbake::test {
 
 std::string source_path(const std::string& relative) { return std::string(RADBAKE_SOURCE_DIR) + "/" + relative; }
@@ -84,6 +92,32 @@ Rgb mean_irradiance(const BakeResult& r, const std::function<bool(Vec3, Vec3)>& 
   if (count) *count = n;
   if (area <= 0) return {0, 0, 0};
   return {float(sum[0] / area), float(sum[1] / area), float(sum[2] / area)};
+}
+
+std::string bake_file_to_folder(const std::string& input, const std::string& folder, const AtlasOptions& atlas_options,
+                                const BakeOptions& options) {
+  LoadedScene loaded = load_gltf(input);
+  Baked b;
+  b.atlas = unwrap(loaded.scene, atlas_options);
+  b.result = bake(loaded.scene, b.atlas, options);
+  std::filesystem::create_directories(folder);
+  std::string name = std::filesystem::path(input).stem().string();
+  LightmapFiles files = write_lightmaps(b.result.pages, folder, name, "irradiance", "lx", automatic_png_scale(b.result.pages));
+  GltfOutput out = write_gltf(*loaded.source, loaded.scene, b.atlas, b.result.vertex_values, files, folder, name);
+  return folder + "/" + out.gltf_file;
+}
+
+std::string fresh_folder(const std::string& name) {
+  std::filesystem::path p = std::filesystem::path(::testing::TempDir()) / ("radbake_" + name);
+  std::filesystem::remove_all(p);
+  std::filesystem::create_directories(p);
+  return p.string();
+}
+
+std::string write_text_file(const std::string& name, const std::string& text) {
+  std::filesystem::path p = std::filesystem::path(::testing::TempDir()) / name;
+  std::ofstream(p) << text;
+  return p.string();
 }
 
 }  // namespace radbake::test

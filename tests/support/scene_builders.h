@@ -34,4 +34,15 @@ Baked bake_scene(const Scene& scene, const AtlasOptions& atlas_options, const Ba
 Rgb mean_irradiance(const BakeResult& r, const std::function<bool(Vec3 position, Vec3 normal)>& where,
                     size_t* count = nullptr);
 
+// The whole command in-process: load, unwrap, bake, write lightmaps and glTF into `folder`
+// (created). Returns the output glTF's path.
+std::string bake_file_to_folder(const std::string& input, const std::string& folder, const AtlasOptions& atlas_options,
+                                const BakeOptions& options = {});
+
+// A fresh empty folder under the test temp directory.
+std::string fresh_folder(const std::string& name);
+
+// Writes `text` to a file in the test temp directory and returns its path.
+std::string write_text_file(const std::string& name, const std::string& text);
+
 }  // namespace radbake::test
