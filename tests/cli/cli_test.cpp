@@ -1,0 +1,197 @@
+// The radbake command as a pipeline sees it: exit statuses, one-line errors, nothing half-written,
+// progress on stderr, and output that the Khronos glTF-Validator accepts.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <thread>
+
+#include "support/scene_builders.h"
+
+namespace radbake {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Outcome {
+  int status;
+  std::string out, err;
+};
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+Outcome run(const std::string& command) {
+  std::string out = ::testing::TempDir() + "/cli_out.txt", err = ::testing::TempDir() + "/cli_err.txt";
+  int raw = std::system((command + " > " + out + " 2> " + err + " < /dev/null").c_str());
+  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
+}
+
+Outcome radbake(const std::string& args) { return run(std::string(RADBAKE_BINARY) + " " + args); }
+
+std::string fixture(const std::string& name) { return test::source_path("tests/fixtures/" + name); }
+
+// Anything the bake left next to the output folder: it must be nothing.
+size_t leftovers(const std::string& parent) {
+  size_t n = 0;
+  for (const auto& entry : fs::directory_iterator(parent)) n += entry.path().filename().string().find(".radbake-") != std::string::npos;
+  return n;
+}
+
+TEST(Cli, HelpListsTheOptionsAndExitsZero) {
+  Outcome r = radbake("--help");
+  EXPECT_EQ(r.status, 0);
+  for (const char* option : {"--density", "--max-page-size", "--tolerance", "--solver", "--threads", "--seed", "--store",
+                             "--quiet", "-o, --output"})
+    EXPECT_NE(r.out.find(option), std::string::npos) << option;
+}
+
+TEST(Cli, UsageErrorsExitTwoWithOneLine) {
+  std::string parent = test::fresh_folder("cli_usage");
+  const std::pair<std::string, std::string> cases[] = {
+      {"bake " + fixture("lit_room.glb") + " -o " + parent + "/out --frobnicate", "unknown option --frobnicate"},
+      {"bake " + fixture("lit_room.glb") + " -o " + parent + "/out --solver magic", "--solver must be"},
+      {"bake " + fixture("lit_room.glb") + " -o " + parent + "/out --density -3", "--density must be between"},
+      {"bake " + fixture("lit_room.glb") + " -o " + parent + "/out --threads", "--threads needs a value"},
+      {"bake " + fixture("lit_room.glb"), "missing -o OUTDIR"},
+      {"frobnicate", "unknown command"},
+  };
+  for (const auto& [args, says] : cases) {
+    Outcome r = radbake(args);
+    EXPECT_EQ(r.status, 2) << args;
+    EXPECT_NE(r.err.find(says), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_FALSE(fs::exists(parent + "/out"));
+  }
+}
+
+class CliBadInput : public ::testing::TestWithParam<std::pair<const char*, const char*>> {};
+
+TEST_P(CliBadInput, ExitsTwoWithAClearLineAndWritesNothing) {
+  std::string parent = test::fresh_folder("cli_bad");
+  Outcome r = radbake("bake " + fixture(std::string("bad/") + GetParam().first) + " -o " + parent + "/out");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err.rfind("radbake: error: ", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find(GetParam().second), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_FALSE(fs::exists(parent + "/out"));
+  EXPECT_EQ(leftovers(parent), 0u);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Fixtures, CliBadInput,
+    ::testing::Values(std::make_pair("invalid_json.gltf", "parse error"),
+                      std::make_pair("missing_buffer.gltf", "missing_buffer.bin"),
+                      std::make_pair("index_out_of_range.gltf", "out of range"),
+                      std::make_pair("nan_position.gltf", "non-finite"),
+                      std::make_pair("infinite_position.gltf", "non-finite"),
+                      std::make_pair("no_geometry.gltf", "no triangles"),
+                      std::make_pair("no_light.gltf", "nothing in the scene emits light"),
+                      std::make_pair("required_extension.gltf", "KHR_draco_mesh_compression")),
+    [](const auto& info) {
+      std::string name = info.param.first;
+      return name.substr(0, name.find('.'));
+    });
+
+TEST(Cli, BakeWritesTheFolderAndReportsProgressAsPlainLines) {
+  std::string parent = test::fresh_folder("cli_bake");
+  Outcome r = radbake("bake " + test::source_path("samples/cornell_box/cornell_box.gltf") + " -o " + parent +
+                  "/out --max-page-size 128");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("wrote"), std::string::npos);
+  // stderr is a file here, so progress comes as plain lines, not a redrawn bar.
+  EXPECT_NE(r.err.find("radbake: final gather 100%\n"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find('\r'), std::string::npos);
+  for (const char* file : {"cornell_box.gltf", "cornell_box_lightmap.bin", "cornell_box_lightmap_0.exr",
+                           "cornell_box_lightmap_0.png", "report.json", "cornell_box_buffer0.bin"})
+    EXPECT_TRUE(fs::exists(parent + "/out/" + file)) << file;
+  nlohmann::json report = nlohmann::json::parse(slurp(parent + "/out/report.json"));
+  EXPECT_EQ(report["generator"], "radbake");
+  EXPECT_GT(report["counts"]["elements"].get<int>(), 1000);
+  EXPECT_GT(report["counts"]["rays"].get<double>(), 1e6);
+  EXPECT_TRUE(report["solver"]["converged"].get<bool>());
+  EXPECT_LT(std::fabs(report["energy_balance"]["relative_error"].get<double>()), 0.005);
+  EXPECT_TRUE(report["seconds"].contains("final gather"));
+  EXPECT_EQ(report["lightmaps"]["unit"], "lx");
+  EXPECT_EQ(report["options"]["solver"], "shooting");
+  EXPECT_EQ(leftovers(parent), 0u);
+}
+
+TEST(Cli, QuietMeansNothingOnStderr) {
+  std::string parent = test::fresh_folder("cli_quiet");
+  Outcome r = radbake("bake " + fixture("lit_room.glb") + " -o " + parent + "/out --max-page-size 64 --quiet");
+  EXPECT_EQ(r.status, 0);
+  EXPECT_EQ(r.err, "");
+}
+
+TEST(Cli, OutputFolderIsReplacedOnlyWhenRadbakeWroteIt) {
+  std::string parent = test::fresh_folder("cli_replace");
+  fs::create_directories(parent + "/precious");
+  std::ofstream(parent + "/precious/thesis.tex") << "do not delete";
+  Outcome refused = radbake("bake " + fixture("lit_room.glb") + " -o " + parent + "/precious --max-page-size 64");
+  EXPECT_EQ(refused.status, 2);
+  EXPECT_NE(refused.err.find("is not a radbake output"), std::string::npos);
+  EXPECT_EQ(slurp(parent + "/precious/thesis.tex"), "do not delete");
+
+  std::string args = "bake " + fixture("lit_room.glb") + " -o " + parent + "/out --max-page-size 64 --quiet";
+  ASSERT_EQ(radbake(args).status, 0);
+  std::ofstream(parent + "/out/stale.txt") << "from before";
+  ASSERT_EQ(radbake(args).status, 0);
+  EXPECT_FALSE(fs::exists(parent + "/out/stale.txt"));  // replaced whole, not merged
+  EXPECT_TRUE(fs::exists(parent + "/out/report.json"));
+  EXPECT_EQ(leftovers(parent), 0u);
+}
+
+TEST(Cli, InterruptCancelsAndLeavesNothing) {
+  std::string parent = test::fresh_folder("cli_interrupt");
+  pid_t pid = fork();
+  if (pid == 0) {
+    std::string out = parent + "/out", input = test::source_path("samples/ferren/ferren.gltf");
+    freopen("/dev/null", "w", stdout);
+    freopen("/dev/null", "w", stderr);
+    execl(RADBAKE_BINARY, RADBAKE_BINARY, "bake", input.c_str(), "-o", out.c_str(), "--gather-rays", "4096", nullptr);
+    _exit(127);
+  }
+  // Wait until the bake is under way (its staging folder exists), then interrupt it.
+  for (int i = 0; i < 200 && leftovers(parent) == 0; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  kill(pid, SIGINT);
+  int raw;
+  waitpid(pid, &raw, 0);
+  EXPECT_TRUE(WIFEXITED(raw));
+  EXPECT_EQ(WEXITSTATUS(raw), 1);
+  EXPECT_FALSE(fs::exists(parent + "/out"));
+  EXPECT_EQ(leftovers(parent), 0u);
+}
+
+// The Khronos glTF-Validator (npm package gltf-validator, run by tests/tools/validate_gltf.mjs;
+// `./dev test` installs it) must find no errors in what radbake writes for each sample.
+class Validator : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(Validator, SampleOutputHasNoErrors) {
+  std::string parent = test::fresh_folder(std::string("cli_validate_") + GetParam());
+  std::string input = test::source_path(std::string("samples/") + GetParam() + "/" + GetParam() + ".gltf");
+  ASSERT_EQ(radbake("bake " + input + " -o " + parent + "/out --max-page-size 128 --quiet").status, 0);
+  ASSERT_TRUE(fs::exists(test::source_path("tests/tools/node_modules/gltf-validator")))
+      << "the validator is not installed: run ./dev test (npm ci in tests/tools)";
+  Outcome v = run("node " + test::source_path("tests/tools/validate_gltf.mjs") + " " + parent + "/out/" + GetParam() + ".gltf");
+  EXPECT_EQ(v.status, 0) << v.out << v.err;
+  nlohmann::json summary = nlohmann::json::parse(v.out);
+  EXPECT_EQ(summary["errors"], 0) << v.out;
+  EXPECT_EQ(summary["warnings"], 0) << v.out;
+}
+
+INSTANTIATE_TEST_SUITE_P(Samples, Validator, ::testing::Values("cornell_box", "ferren"));
+
+}  // namespace
+}  // namespace radbake

@@ -1,0 +1,153 @@
+// Writing the baked glTF: the input kept whole, lightmap UVs, COLOR_0 and MOZ_lightmap added,
+// instanced meshes split per node, the input's own TEXCOORD_1 kept; the output loads back.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "io/gltf.h"
+#include "io/lightmap_images.h"
+#include "support/scene_builders.h"
+
+namespace radbake {
+namespace {
+
+using json = nlohmann::json;
+namespace fs = std::filesystem;
+
+json read_json(const std::string& path) {
+  std::ifstream in(path);
+  return json::parse(in);
+}
+
+TEST(GltfWriter, CornellBoxOutputKeepsTheSceneAndAddsTheBake) {
+  std::string folder = test::fresh_folder("writer_cornell");
+  std::string input = test::source_path("samples/cornell_box/cornell_box.gltf");
+  std::string out = test::bake_file_to_folder(input, folder, {0.0f, 128, 2});
+  json in = read_json(input), doc = read_json(out);
+
+  EXPECT_EQ(doc["nodes"].size(), in["nodes"].size());
+  EXPECT_EQ(doc["cameras"], in["cameras"]);
+  EXPECT_EQ(doc["asset"], in["asset"]);
+  for (size_t n = 0; n < in["nodes"].size(); ++n) {  // names, transforms, cameras untouched
+    EXPECT_EQ(doc["nodes"][n].value("name", ""), in["nodes"][n].value("name", ""));
+    EXPECT_EQ(doc["nodes"][n].value("rotation", json()), in["nodes"][n].value("rotation", json()));
+  }
+  const json& used = doc["extensionsUsed"];
+  EXPECT_NE(std::find(used.begin(), used.end(), "MOZ_lightmap"), used.end());
+  EXPECT_NE(std::find(used.begin(), used.end(), "KHR_materials_emissive_strength"), used.end());
+  EXPECT_FALSE(doc.contains("extensionsRequired"));  // MOZ_lightmap only in extensionsUsed
+
+  for (const json& mesh : doc["meshes"])
+    for (const json& prim : mesh["primitives"]) {
+      ASSERT_TRUE(prim["attributes"].contains("TEXCOORD_1")) << mesh["name"];
+      ASSERT_TRUE(prim["attributes"].contains("COLOR_0")) << mesh["name"];
+      const json& material = doc["materials"][prim["material"].get<size_t>()];
+      const json& lightmap = material["extensions"]["MOZ_lightmap"];
+      EXPECT_EQ(lightmap["texCoord"], 1);
+      EXPECT_GT(lightmap["intensity"].get<double>(), 0);
+      const json& image = doc["images"][doc["textures"][lightmap["index"].get<size_t>()]["source"].get<size_t>()];
+      EXPECT_TRUE(fs::exists(fs::path(folder) / image["uri"].get<std::string>()));
+    }
+  EXPECT_EQ(doc["extras"]["radbake"]["quantity"], "irradiance");
+  EXPECT_EQ(doc["extras"]["radbake"]["unit"], "lx");
+  for (const json& page : doc["extras"]["radbake"]["pages"]) {
+    EXPECT_TRUE(fs::exists(fs::path(folder) / page["exr"].get<std::string>()));
+    LightmapPage exr = read_lightmap_exr((fs::path(folder) / page["exr"].get<std::string>()).string());
+    EXPECT_GT(exr.width, 0);
+  }
+
+  // It loads back: same instances, each with lightmap UVs and baked colours in [0, 1].
+  LoadedScene back = load_gltf(out);
+  LoadedScene original = load_gltf(input);
+  ASSERT_EQ(back.scene.instances.size(), original.scene.instances.size());
+  for (const MeshInstance& inst : back.scene.instances) {
+    ASSERT_NE(inst.lightmap_uvs(), nullptr) << inst.name;
+    ASSERT_EQ(inst.colors.size(), inst.positions.size()) << inst.name;
+    for (Rgb c : inst.colors) {
+      EXPECT_GE(std::min({c.x, c.y, c.z}), 0.0f);
+      EXPECT_LE(std::max({c.x, c.y, c.z}), 1.0f);
+    }
+  }
+  EXPECT_EQ(back.scene.lights.size(), original.scene.lights.size());
+}
+
+double mean_colour(const MeshInstance& inst) {
+  double sum = 0;
+  for (Rgb c : inst.colors) sum += c.x + c.y + c.z;
+  return sum / (3.0 * double(inst.colors.size()));
+}
+
+TEST(GltfWriter, AnInstancedMeshGetsACopyAndALightingPerNode) {
+  std::string folder = test::fresh_folder("writer_instanced");
+  std::string out = test::bake_file_to_folder(test::source_path("tests/fixtures/instanced_mesh.gltf"), folder,
+                                              {0.0f, 256, 2});
+  json doc = read_json(out);
+  int near_mesh = -1, corner_mesh = -1;
+  for (const json& node : doc["nodes"]) {
+    if (node.value("name", "") == "block_near_lamp") near_mesh = node["mesh"];
+    if (node.value("name", "") == "block_in_corner") corner_mesh = node["mesh"];
+  }
+  ASSERT_GE(near_mesh, 0);
+  ASSERT_GE(corner_mesh, 0);
+  EXPECT_NE(near_mesh, corner_mesh);
+  const json& a = doc["meshes"][size_t(near_mesh)]["primitives"][0]["attributes"];
+  const json& b = doc["meshes"][size_t(corner_mesh)]["primitives"][0]["attributes"];
+  EXPECT_NE(a["TEXCOORD_1"], b["TEXCOORD_1"]);  // their own places in the atlas
+  EXPECT_NE(a["COLOR_0"], b["COLOR_0"]);
+
+  LoadedScene back = load_gltf(out);
+  const MeshInstance *near = nullptr, *corner = nullptr;
+  for (const MeshInstance& inst : back.scene.instances) {
+    if (inst.name.rfind("block_near_lamp", 0) == 0) near = &inst;
+    if (inst.name.rfind("block_in_corner", 0) == 0) corner = &inst;
+  }
+  ASSERT_TRUE(near && corner);
+  EXPECT_GT(mean_colour(*near), 2 * mean_colour(*corner));  // the one by the lamp is brighter
+}
+
+TEST(GltfWriter, TheInputsOwnLightmapUvsAreKept) {
+  std::string input = test::source_path("tests/fixtures/own_lightmap_uvs.gltf");
+  std::string out = test::bake_file_to_folder(input, test::fresh_folder("writer_own_uvs"), {32.0f, 256, 2});
+  LoadedScene original = load_gltf(input), back = load_gltf(out);
+  ASSERT_EQ(back.scene.instances.size(), original.scene.instances.size());
+  for (size_t i = 0; i < original.scene.instances.size(); ++i) {
+    const std::vector<Vec2>& a = *original.scene.instances[i].lightmap_uvs();
+    const std::vector<Vec2>& b = *back.scene.instances[i].lightmap_uvs();
+    ASSERT_EQ(a.size(), b.size());
+    for (size_t v = 0; v < a.size(); ++v) {
+      EXPECT_EQ(a[v].x, b[v].x);
+      EXPECT_EQ(a[v].y, b[v].y);
+    }
+  }
+}
+
+TEST(GltfWriter, ExtrasAndUnknownExtensionsSurvive) {
+  // The external-buffer room, decorated with what radbake does not model.
+  std::string folder = test::fresh_folder("writer_extras_in");
+  json doc = read_json(test::source_path("tests/fixtures/external_buffer.gltf"));
+  fs::copy_file(test::source_path("tests/fixtures/external_buffer.bin"), fs::path(folder) / "external_buffer.bin");
+  doc["extras"] = {{"project", "classroom"}, {"revision", 7}};
+  doc["nodes"][0]["extras"] = {{"tag", "north wall"}};
+  doc["materials"][0]["extensions"]["EXT_example_custom"] = {{"roughnessBoost", 0.5}};
+  doc["extensionsUsed"].push_back("EXT_example_custom");
+  std::string input = (fs::path(folder) / "decorated.gltf").string();
+  std::ofstream(input) << doc.dump();
+
+  json out = read_json(test::bake_file_to_folder(input, test::fresh_folder("writer_extras_out"), {0.0f, 128, 2}));
+  EXPECT_EQ(out["extras"]["project"], "classroom");
+  EXPECT_EQ(out["extras"]["revision"], 7);
+  EXPECT_TRUE(out["extras"].contains("radbake"));
+  EXPECT_EQ(out["nodes"][0]["extras"]["tag"], "north wall");
+  EXPECT_EQ(out["materials"][0]["extensions"]["EXT_example_custom"]["roughnessBoost"], 0.5);
+  const json& used = out["extensionsUsed"];
+  EXPECT_NE(std::find(used.begin(), used.end(), "EXT_example_custom"), used.end());
+  // The lightmap materials are copies, so the custom extension is on those too.
+  size_t with_custom = 0;
+  for (const json& m : out["materials"]) with_custom += m.contains("extensions") && m["extensions"].contains("EXT_example_custom");
+  EXPECT_GE(with_custom, 2u);
+}
+
+}  // namespace
+}  // namespace radbake
