@@ -42,34 +42,28 @@ Elements build_elements(const Surface& surface, const MaterialSampler& materials
                         Progress& progress) {
   const size_t triangle_count = surface.triangle_count();
   progress.begin("elements", triangle_count + 1);
-  std::vector<std::vector<Piece>> pieces_of(triangle_count);
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, triangle_count, 256), [&](const tbb::blocked_range<size_t>& r) {
-    for (size_t t = r.begin(); t < r.end(); ++t) {
-      if (!(surface.area[t] > 0) || surface.chart[t] == UINT32_MAX) continue;
-      const AtlasPage& page = surface.pages[surface.page[t]];
-      const Vec2* c = &surface.corner_lightmap[3 * t];
-      for_each_covered_texel(c[0], c[1], c[2], page.width, page.height, [&](const TexelPiece& p) {
-        pieces_of[t].push_back({surface.page[t], uint32_t(p.y * page.width + p.x), uint32_t(t), p.area, p.centroid});
-      });
-    }
-    progress.advance(r.size());
-  });
+  // One list, filled in triangle order: rasterising is quick next to the sort, and a second copy
+  // of the pieces (per thread, then merged) would double this stage's memory peak.
   std::vector<Piece> pieces;
-  for (auto& v : pieces_of) {
-    pieces.insert(pieces.end(), v.begin(), v.end());
-    v = {};
+  for (size_t t = 0; t < triangle_count; ++t) {
+    if (!(surface.area[t] > 0) || surface.chart[t] == UINT32_MAX) continue;
+    const AtlasPage& page = surface.pages[surface.page[t]];
+    const Vec2* c = &surface.corner_lightmap[3 * t];
+    for_each_covered_texel(c[0], c[1], c[2], page.width, page.height, [&](const TexelPiece& p) {
+      pieces.push_back({surface.page[t], uint32_t(p.y * page.width + p.x), uint32_t(t), p.area, p.centroid});
+    });
+    if (t % 4096 == 0) progress.advance(4096);
   }
-  pieces_of = {};
   std::sort(pieces.begin(), pieces.end(), [](const Piece& a, const Piece& b) {
     return a.page != b.page ? a.page < b.page : a.texel != b.texel ? a.texel < b.texel : a.triangle < b.triangle;
   });
 
   // Group pieces by texel.
-  std::vector<size_t> group_start;
+  std::vector<uint32_t> group_start;
   for (size_t i = 0; i < pieces.size(); ++i)
     if (i == 0 || pieces[i].page != pieces[i - 1].page || pieces[i].texel != pieces[i - 1].texel)
-      group_start.push_back(i);
-  group_start.push_back(pieces.size());
+      group_start.push_back(uint32_t(i));
+  group_start.push_back(uint32_t(pieces.size()));
   const size_t n = group_start.size() - 1;
 
   Elements e;

@@ -69,10 +69,14 @@ int run_bake(const radbake::BakeCommand& cmd) {
   t = std::chrono::steady_clock::now();
   const std::string name = std::filesystem::path(cmd.input).stem().string();
   const bool irradiance = cmd.bake.store == StoredQuantity::Irradiance;
+  if (cmd.debug_dumps) write_debug_dumps(result, atlas.pages, folder.path(), name);
+  // Per-element data is not needed for writing; freeing it keeps the write out of the peak.
+  result.elements = {};
+  result.irradiance = {};
+  result.direct = {};
   float scale = cmd.png_scale > 0 ? cmd.png_scale : automatic_png_scale(result.pages);
   LightmapFiles files = write_lightmaps(result.pages, folder.path(), name, irradiance ? "irradiance" : "radiosity",
                                         irradiance ? "lx" : "lm/m2", scale);
-  if (cmd.debug_dumps) write_debug_dumps(result, atlas.pages, folder.path(), name);
   GltfOutput gltf = write_gltf(*loaded.source, loaded.scene, atlas, result.vertex_values, files, folder.path(), name);
   run.io_times.push_back({"write", seconds_since(t)});
 

@@ -29,10 +29,8 @@ void write_image(const std::string& path, int width, int height, const OIIO::Typ
 }  // namespace
 
 void write_exr(const std::string& path, const LightmapPage& page) {
-  std::vector<float> linear(page.texels.size() * 3);
-  for (size_t t = 0; t < page.texels.size(); ++t)
-    for (int c = 0; c < 3; ++c) linear[3 * t + size_t(c)] = page.texels[t][c];
-  write_image(path, page.width, page.height, OIIO::TypeDesc::HALF, linear.data(), OIIO::TypeDesc::FLOAT, true);
+  static_assert(sizeof(Rgb) == 3 * sizeof(float), "texels are packed float RGB");
+  write_image(path, page.width, page.height, OIIO::TypeDesc::HALF, page.texels.data(), OIIO::TypeDesc::FLOAT, true);
 }
 
 float automatic_png_scale(const std::vector<LightmapPage>& pages) {
