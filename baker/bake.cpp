@@ -1,5 +1,6 @@
 #include "baker/bake.h"
 
+#include <malloc.h>
 #include <tbb/global_control.h>
 
 #include <chrono>
@@ -24,6 +25,9 @@ class StageClock {
     auto start = std::chrono::steady_clock::now();
     auto result = f();
     times_.push_back({stage, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()});
+    // Stages free large scratch arrays; hand those pages back so the next stage's peak starts
+    // from what is live, not from what the allocator keeps cached.
+    malloc_trim(0);
     return result;
   }
 
@@ -104,6 +108,9 @@ BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& optio
 
   const size_t n = elements.size();
   for (size_t i = 0; i < n; ++i) result.irradiance[i] += result.direct[i];
+  report.balance = energy_balance(elements, patches, transport, solution.exitance, punctual_power, result.irradiance);
+  transport = {};  // the largest patch-level structure; nothing after this needs it
+  if (!options.keep_direct) result.direct = {};
   std::vector<Rgb> radiosity;
   if (options.store == StoredQuantity::Radiosity) {
     radiosity.resize(n);
@@ -114,7 +121,6 @@ BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& optio
   result.vertex_values =
       clock.run("vertex values", [&] { return vertex_values(elements, surface, atlas, result.pages, stored); });
 
-  report.balance = energy_balance(elements, patches, transport, solution.exitance, punctual_power, result.irradiance);
   for (const AtlasPage& p : surface.pages) report.page_texels += size_t(p.width) * p.height;
   report.elements = n;
   for (size_t i = 0; i < n; ++i) {

@@ -34,6 +34,7 @@ struct BakeOptions {
   uint64_t seed = 1;            // same seed, same input: bit-identical output, whatever the thread count
   int threads = 0;              // 0: all cores
   StoredQuantity store = StoredQuantity::Irradiance;
+  bool keep_direct = false;     // keep BakeResult::direct (for debug dumps); costs 12 bytes per texel
 };
 
 struct StageTime {
@@ -61,7 +62,7 @@ struct BakeResult {
   std::vector<std::vector<Rgb>> vertex_values;     // per instance, per atlas output vertex
   Elements elements;                               // kept for reports, tests and debug dumps
   std::vector<Rgb> irradiance;                     // per element, lux
-  std::vector<Rgb> direct;                         // its direct part (lights and emitting surfaces), lux
+  std::vector<Rgb> direct;                         // its direct part, lux; empty unless keep_direct
   std::vector<uint32_t> patch_of_element;          // UINT32_MAX for buried elements
   BakeReport report;
 };

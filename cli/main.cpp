@@ -60,7 +60,9 @@ int run_bake(const radbake::BakeCommand& cmd) {
   run.io_times.push_back({"lightmap uvs", seconds_since(t)});
 
   ProgressDisplay display(!cmd.quiet);
-  BakeResult result = bake(loaded.scene, atlas, cmd.bake, [&](const std::string& stage, double fraction) {
+  BakeOptions options = cmd.bake;
+  options.keep_direct = cmd.debug_dumps;
+  BakeResult result = bake(loaded.scene, atlas, options, [&](const std::string& stage, double fraction) {
     display.update(stage, fraction);
     return !interrupted.load();
   });
