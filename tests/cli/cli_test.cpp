@@ -174,6 +174,28 @@ TEST(Cli, InterruptCancelsAndLeavesNothing) {
   EXPECT_EQ(leftovers(parent), 0u);
 }
 
+// The README's example commands run as written (with out/ moved to a temporary folder).
+TEST(Cli, ReadmeExamplesRun) {
+  std::stringstream readme(slurp(test::source_path("README.md")));
+  std::string parent = test::fresh_folder("cli_readme"), line;
+  size_t ran = 0;
+  while (std::getline(readme, line)) {
+    const std::string prefix = "./build/radbake ";
+    if (line.rfind(prefix, 0) != 0) continue;
+    std::string args = line.substr(prefix.size());
+    for (size_t at; (at = args.find(" out/")) != std::string::npos;) args.replace(at, 5, " " + parent + "/");
+    for (size_t at; (at = args.find(" samples/")) != std::string::npos;)
+      args.replace(at, 9, " " + test::source_path("samples/"));
+    Outcome r = radbake(args + (args.find("bake") == 0 ? " --quiet" : ""));
+    EXPECT_EQ(r.status, 0) << line << "\n" << r.err;
+    ++ran;
+  }
+  EXPECT_GE(ran, 3u);
+  // And the two set-up commands are the ones ./dev offers.
+  std::string dev = slurp(test::source_path("dev"));
+  for (const char* command : {"  sample)", "  test)", "  bench)", "  asan)"}) EXPECT_NE(dev.find(command), std::string::npos);
+}
+
 // The Khronos glTF-Validator (npm package gltf-validator, run by tests/tools/validate_gltf.mjs;
 // `./dev test` installs it) must find no errors in what radbake writes for each sample.
 class Validator : public ::testing::TestWithParam<const char*> {};
