@@ -79,5 +79,23 @@ TEST(MaterialSampler, EmissionIsPiTimesFactorTimesStrength) {
   EXPECT_FLOAT_EQ(e.z, float(M_PI) * 10);
 }
 
+TEST(MaterialSampler, EmissiveTextureScalesTheEmission) {
+  Scene scene;
+  scene.images.push_back(two_texel_image());
+  int m = test::add_material(scene, {0, 0, 0}, {1, 1, 1}, 10);
+  scene.materials[size_t(m)].emissive_texture.image = 0;
+  scene.materials[size_t(m)].emissive_texture.wrap_s = Wrap::ClampToEdge;
+  test::add_quad(scene, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, m);
+  scene.instances[0].texcoords = {{{0, 0}, {1, 0}, {1, 1}, {0, 1}}};
+  Atlas atlas = test::unwrap(scene, {16.0f, 64, 2});
+  Surface surface = build_surface(scene, atlas);
+  MaterialSampler sampler(scene, surface);
+  EXPECT_FALSE(sampler.is_uniform(0));
+  Rgb red = sampler.emission(0, {0.05f, 0.0f}, 0.01f), grey = sampler.emission(0, {0.9f, 0.05f}, 0.01f);
+  EXPECT_NEAR(red.x, float(M_PI) * 10, 1e-3f);
+  EXPECT_NEAR(red.y, 0.0f, 1e-4f);
+  EXPECT_NEAR(grey.y, float(M_PI) * 10 * srgb(128 / 255.0f), 1e-3f);
+}
+
 }  // namespace
 }  // namespace radbake

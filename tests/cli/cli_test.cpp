@@ -12,6 +12,7 @@
 #include <sstream>
 #include <thread>
 
+#include "io/gltf.h"
 #include "support/scene_builders.h"
 
 namespace radbake {
@@ -127,6 +128,17 @@ TEST(Cli, BakeWritesTheFolderAndReportsProgressAsPlainLines) {
   EXPECT_EQ(leftovers(parent), 0u);
 }
 
+TEST(Cli, OnATerminalProgressIsOneRedrawnBar) {
+  // script(1) gives radbake a pseudo-terminal for stderr.
+  std::string parent = test::fresh_folder("cli_tty");
+  Outcome r = run("script -qec '" + std::string(RADBAKE_BINARY) + " bake " + fixture("lit_room.glb") + " -o " + parent +
+                  "/out --max-page-size 64' /dev/null");
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("\r["), std::string::npos);        // redrawn in place
+  EXPECT_NE(r.out.find("100% final gather"), std::string::npos);
+  EXPECT_EQ(r.out.find("radbake: final gather"), std::string::npos);  // no plain lines
+}
+
 TEST(Cli, QuietMeansNothingOnStderr) {
   std::string parent = test::fresh_folder("cli_quiet");
   Outcome r = radbake("bake " + fixture("lit_room.glb") + " -o " + parent + "/out --max-page-size 64 --quiet");
@@ -211,6 +223,14 @@ TEST_P(Validator, SampleOutputHasNoErrors) {
   nlohmann::json summary = nlohmann::json::parse(v.out);
   EXPECT_EQ(summary["errors"], 0) << v.out;
   EXPECT_EQ(summary["warnings"], 0) << v.out;
+  // And it loads back with tinygltf, every instance with its lightmap UVs and baked colours.
+  LoadedScene back = load_gltf(parent + "/out/" + GetParam() + ".gltf");
+  LoadedScene original = load_gltf(input);
+  ASSERT_EQ(back.scene.instances.size(), original.scene.instances.size());
+  for (const MeshInstance& inst : back.scene.instances) {
+    EXPECT_NE(inst.lightmap_uvs(), nullptr) << inst.name;
+    EXPECT_EQ(inst.colors.size(), inst.vertex_count()) << inst.name;
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Samples, Validator, ::testing::Values("cornell_box", "ferren"));
