@@ -58,4 +58,19 @@ Surface build_surface(const Scene& scene, const Atlas& atlas) {
   return s;
 }
 
+std::vector<MeshView> mesh_views(const Scene& scene) {
+  std::vector<MeshView> views;
+  for (const MeshInstance& inst : scene.instances) {
+    MeshView v;
+    v.positions = inst.positions.data();
+    v.vertex_count = inst.vertex_count();
+    v.triangles = inst.triangles.data();
+    v.triangle_count = inst.triangle_count();
+    v.lightmap_uvs = inst.lightmap_uvs() ? inst.lightmap_uvs()->data() : nullptr;
+    v.name = inst.name;
+    views.push_back(v);
+  }
+  return views;
+}
+
 }  // namespace radbake

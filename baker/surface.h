@@ -43,4 +43,7 @@ struct Surface {
 
 Surface build_surface(const Scene& scene, const Atlas& atlas);
 
+// The scene's instances as uv/ takes them, for ensure_lightmap_uvs (views into the scene).
+std::vector<MeshView> mesh_views(const Scene& scene);
+
 }  // namespace radbake

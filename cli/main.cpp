@@ -9,6 +9,7 @@
 
 #include "baker/bake.h"
 #include "baker/errors.h"
+#include "baker/surface.h"
 #include "cli/command_line.h"
 #include "cli/progress_display.h"
 #include "io/debug_dumps.h"
@@ -45,18 +46,7 @@ int run_bake(const radbake::BakeCommand& cmd) {
   StagedFolder folder(cmd.output);
 
   t = std::chrono::steady_clock::now();
-  std::vector<MeshView> views;
-  for (const MeshInstance& inst : loaded.scene.instances) {
-    MeshView v;
-    v.positions = inst.positions.data();
-    v.vertex_count = inst.vertex_count();
-    v.triangles = inst.triangles.data();
-    v.triangle_count = inst.triangle_count();
-    v.lightmap_uvs = inst.lightmap_uvs() ? inst.lightmap_uvs()->data() : nullptr;
-    v.name = inst.name;
-    views.push_back(v);
-  }
-  Atlas atlas = ensure_lightmap_uvs(views, cmd.atlas);
+  Atlas atlas = ensure_lightmap_uvs(mesh_views(loaded.scene), cmd.atlas);
   run.io_times.push_back({"lightmap uvs", seconds_since(t)});
 
   ProgressDisplay display(!cmd.quiet);

@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "io/gltf.h"
+#include "baker/surface.h"
 #include "io/lightmap_images.h"
 
 namespace radbake::test {
@@ -57,20 +58,7 @@ void add_box(Scene& scene, Vec3 lo, Vec3 hi, bool inward, int material, const st
   add_box(scene, lo, hi, inward, m, name);
 }
 
-Atlas unwrap(const Scene& scene, const AtlasOptions& options) {
-  std::vector<MeshView> views;
-  for (const MeshInstance& inst : scene.instances) {
-    MeshView v;
-    v.positions = inst.positions.data();
-    v.vertex_count = inst.vertex_count();
-    v.triangles = inst.triangles.data();
-    v.triangle_count = inst.triangle_count();
-    v.lightmap_uvs = inst.lightmap_uvs() ? inst.lightmap_uvs()->data() : nullptr;
-    v.name = inst.name;
-    views.push_back(v);
-  }
-  return ensure_lightmap_uvs(views, options);
-}
+Atlas unwrap(const Scene& scene, const AtlasOptions& options) { return ensure_lightmap_uvs(mesh_views(scene), options); }
 
 Baked bake_scene(const Scene& scene, const AtlasOptions& atlas_options, const BakeOptions& options) {
   Baked b;
