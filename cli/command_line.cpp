@@ -3,6 +3,7 @@
 #include <cmath>
 #include <functional>
 #include <map>
+#include <sstream>
 
 namespace radbake {
 namespace {
@@ -104,7 +105,6 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
       {"--patch-size", [&](const std::string& v) { b.bake.patches.block_size = int(parse_integer("--patch-size", v, 0, 16384)); }},
       {"--png-scale", [&](const std::string& v) { b.png_scale = v == "auto" ? 0.0f : float(parse_number("--png-scale", v, 1e-30, 1e30)); }},
   };
-  std::map<std::string, std::string> given;
   for (size_t i = 1; i < args.size(); ++i) {
     std::string arg = args[i];
     if (arg == "-h" || arg == "--help") {
@@ -113,7 +113,7 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
     }
     if (arg == "--quiet") { b.quiet = true; continue; }
     if (arg == "--debug-dumps") { b.debug_dumps = true; continue; }
-    if (arg == "--no-ambient") { b.bake.solve.ambient_term = false; given["--no-ambient"] = "yes"; continue; }
+    if (arg == "--no-ambient") { b.bake.solve.ambient_term = false; continue; }
     if (arg.empty() || arg[0] != '-') {
       if (!b.input.empty()) throw UsageError("unexpected argument '" + arg + "' (one scene per bake)");
       b.input = arg;
@@ -134,30 +134,35 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
       value = args[++i];
     }
     setter->second(value);
-    given[arg] = value;
   }
   if (b.input.empty()) throw UsageError("missing input scene (radbake bake SCENE.gltf -o OUTDIR)");
   if (b.output.empty()) throw UsageError("missing -o OUTDIR");
 
-  auto show = [&](const char* key, std::string fallback) {
-    auto it = given.find(key);
-    b.effective.emplace_back(key + 2, it != given.end() ? it->second : fallback);
+  // The report lists every option with the value the bake used, read back from the structs so
+  // the listing cannot drift from the defaults.
+  auto number = [](double v) {
+    std::ostringstream out;
+    out << v;
+    return out.str();
   };
-  show("--density", "auto");
-  show("--max-page-size", std::to_string(b.atlas.max_page_size));
-  show("--padding", std::to_string(b.atlas.padding));
-  show("--tolerance", "0.001");
-  show("--solver", "shooting");
-  show("--threads", "0");
-  show("--seed", "1");
-  show("--store", "irradiance");
-  show("--gather-rays", std::to_string(b.bake.gather_rays));
-  show("--patch-rays", std::to_string(b.bake.patch_rays));
-  show("--area-light-rays", std::to_string(b.bake.direct.area_light_rays));
-  show("--light-rays", std::to_string(b.bake.direct.punctual_rays));
-  show("--patch-size", "0");
-  show("--png-scale", "auto");
-  show("--no-ambient", "no");
+  const char* solver_names[] = {"shooting", "gauss-seidel", "jacobi"};
+  b.effective = {
+      {"density", b.atlas.texel_density > 0 ? number(b.atlas.texel_density) : "auto"},
+      {"max-page-size", number(b.atlas.max_page_size)},
+      {"padding", number(b.atlas.padding)},
+      {"tolerance", number(b.bake.solve.tolerance)},
+      {"solver", solver_names[int(b.bake.solve.solver)]},
+      {"threads", number(b.bake.threads)},
+      {"seed", number(double(b.bake.seed))},
+      {"store", b.bake.store == StoredQuantity::Irradiance ? "irradiance" : "radiosity"},
+      {"gather-rays", number(b.bake.gather_rays)},
+      {"patch-rays", number(b.bake.patch_rays)},
+      {"area-light-rays", number(b.bake.direct.area_light_rays)},
+      {"light-rays", number(b.bake.direct.punctual_rays)},
+      {"patch-size", b.bake.patches.block_size > 0 ? number(b.bake.patches.block_size) : "auto"},
+      {"png-scale", b.png_scale > 0 ? number(b.png_scale) : "auto"},
+      {"ambient", b.bake.solve.ambient_term ? "yes" : "no"},
+  };
   return cl;
 }
 
