@@ -176,10 +176,12 @@ bool footprint_surface_point(const Elements& elements, const Surface& surface, s
 }
 
 Vec3 footprint_point(const Elements& elements, const Surface& surface, size_t i, Vec2 u) {
-  int cell = std::min(3, int(u.y * 4)) * 4 + std::min(3, int(u.x * 4));
+  int cx = std::min(3, int(u.x * 4)), cy = std::min(3, int(u.y * 4));
+  if (!(elements.visible_cells[i] >> (cy * 4 + cx) & 1)) return elements.position[i];
+  // Near geometry only the cell centres were checked (a wall may cross a cell): use those.
+  if (elements.flags[i] & kNearGeometry) u = {(cx + 0.5f) / 4, (cy + 0.5f) / 4};
   Vec3 p;
-  if (!(elements.visible_cells[i] >> cell & 1) || !footprint_surface_point(elements, surface, i, u, p))
-    return elements.position[i];
+  if (!footprint_surface_point(elements, surface, i, u, p)) return elements.position[i];
   // A point on the chart's very edge can lie in the plane of a wall standing there, where a ray
   // may slip through the wall; pulled a little toward the sample point, it is clear of it.
   Vec3 inward = elements.position[i] - p;

@@ -33,17 +33,32 @@ long parse_integer(const std::string& option, const std::string& text, long lo, 
 
 const char* usage_text() {
   return R"(usage: radbake bake SCENE.gltf|SCENE.glb -o OUTDIR [options]
+       radbake uv SCENE.gltf|SCENE.glb --stats [--json] [lightmap UV options]
        radbake --help | --version
 
 Bakes diffuse global illumination (radiosity with colour bleeding) into lightmaps.
 OUTDIR receives NAME.gltf with lightmap UVs (TEXCOORD_1), baked COLOR_0 and MOZ_lightmap
 materials, the lightmap pages as NAME_lightmap_N.exr (linear) and .png (sRGB), and report.json.
 
-options:
-  -o, --output DIR        output folder (required); replaced only if it is an earlier radbake output
-  --density N             lightmap texels per metre (default: auto, fill one page)
+`radbake uv` unwraps without baking and prints what the atlas is worth: pages, density, charts,
+utilisation, L2 stretch (Sander et al. 2001; 1 = none), seam length, overlapping texels, flipped
+triangles, padding violations, time. With --evaluate-texcoord N it measures the scene's own
+TEXCOORD_N as one page of --max-page-size instead (for comparing UVs made elsewhere).
+
+lightmap UV options (bake and uv):
+  --density N             lightmap texels per metre (default: auto, the most that fits one page)
   --max-page-size N       texels per page side, 16..16384 (default 1024)
   --padding N             empty texels between charts, 0..64 (default 2)
+  --fit-page              with --density: lower it until everything fits one page (reported);
+                          without, a scene too large for one page gets more pages
+  --no-rotate             keep charts upright (no turning to their tightest box or by 90 degrees)
+  --lightmap-uvs WHAT     keep-valid: use the scene's TEXCOORD_1 where valid, generate elsewhere;
+                          keep: use it even where invalid; generate: always generate
+                          (default keep-valid; what was invalid is reported)
+  --chart-angle DEG       faces of one chart stay within this cone of normals, 1..89 (default 50)
+
+bake options:
+  -o, --output DIR        output folder (required); replaced only if it is an earlier radbake output
   --tolerance X           stop when unshot light <= X of the light brought in (default 0.001)
   --solver NAME           shooting | gauss-seidel | jacobi (default shooting)
   --threads N             worker threads, 0 = all cores (default 0)
@@ -66,6 +81,85 @@ exit status: 0 done, 2 bad input or usage, 1 anything else
 )";
 }
 
+namespace {
+
+using Setter = std::function<void(const std::string&)>;
+using Flag = std::function<void()>;
+
+// The atlas options `bake` and `uv` share.
+void atlas_options(AtlasOptions& a, std::map<std::string, Setter>& with_value, std::map<std::string, Flag>& flags) {
+  with_value["--density"] = [&](const std::string& v) { a.texel_density = float(parse_number("--density", v, 1e-6, 1e9)); };
+  with_value["--max-page-size"] = [&](const std::string& v) { a.max_page_size = int(parse_integer("--max-page-size", v, 16, 16384)); };
+  with_value["--padding"] = [&](const std::string& v) { a.padding = int(parse_integer("--padding", v, 0, 64)); };
+  with_value["--lightmap-uvs"] = [&](const std::string& v) {
+    if (v == "keep-valid") a.input_uvs = InputUvPolicy::KeepValid;
+    else if (v == "keep") a.input_uvs = InputUvPolicy::KeepAll;
+    else if (v == "generate") a.input_uvs = InputUvPolicy::Generate;
+    else throw UsageError("option --lightmap-uvs must be keep-valid, keep or generate, got '" + v + "'");
+  };
+  with_value["--chart-angle"] = [&](const std::string& v) { a.max_chart_normal_deviation = float(parse_number("--chart-angle", v, 1, 89)); };
+  flags["--no-rotate"] = [&] { a.rotate_charts = false; };
+  flags["--fit-page"] = [&] { a.fit_one_page = true; };
+}
+
+// Reads `args` from position 1: options from the two tables, positional arguments to `positional`.
+void parse_options(const std::vector<std::string>& args, const std::map<std::string, Setter>& with_value,
+                   const std::map<std::string, Flag>& flags, const std::function<void(const std::string&)>& positional,
+                   bool& help) {
+  for (size_t i = 1; i < args.size(); ++i) {
+    std::string arg = args[i];
+    if (arg == "-h" || arg == "--help") {
+      help = true;
+      return;
+    }
+    if (auto flag = flags.find(arg); flag != flags.end()) {
+      flag->second();
+      continue;
+    }
+    if (arg.empty() || arg[0] != '-') {
+      positional(arg);
+      continue;
+    }
+    std::string value;
+    bool inline_value = false;
+    if (arg == "-o") arg = "--output";
+    if (size_t eq = arg.find('='); arg.rfind("--", 0) == 0 && eq != std::string::npos) {
+      value = arg.substr(eq + 1);
+      arg = arg.substr(0, eq);
+      inline_value = true;
+    }
+    auto setter = with_value.find(arg);
+    if (setter == with_value.end()) throw UsageError("unknown option " + arg + " (see radbake --help)");
+    if (!inline_value) {
+      if (i + 1 >= args.size()) throw UsageError("option " + arg + " needs a value");
+      value = args[++i];
+    }
+    setter->second(value);
+  }
+}
+
+void parse_uv(const std::vector<std::string>& args, CommandLine& cl) {
+  UvCommand& u = cl.uv;
+  std::map<std::string, Setter> with_value;
+  std::map<std::string, Flag> flags;
+  atlas_options(u.atlas, with_value, flags);
+  with_value["--evaluate-texcoord"] = [&](const std::string& v) { u.evaluate_texcoord = int(parse_integer("--evaluate-texcoord", v, 0, 7)); };
+  flags["--stats"] = [] {};  // statistics are what `uv` prints; the flag is accepted for clarity
+  flags["--json"] = [&] { u.json = true; };
+  bool help = false;
+  parse_options(args, with_value, flags, [&](const std::string& arg) {
+    if (!u.input.empty()) throw UsageError("unexpected argument '" + arg + "' (one scene at a time)");
+    u.input = arg;
+  }, help);
+  if (help) {
+    cl.action = Action::Help;
+    return;
+  }
+  if (u.input.empty()) throw UsageError("missing input scene (radbake uv SCENE.gltf --stats)");
+}
+
+}  // namespace
+
 CommandLine parse_command_line(const std::vector<std::string>& args) {
   CommandLine cl;
   if (args.empty()) throw UsageError("missing command (try radbake --help)");
@@ -74,16 +168,17 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
     cl.action = Action::Version;
     return cl;
   }
+  if (args[0] == "uv") {
+    cl.action = Action::Uv;
+    parse_uv(args, cl);
+    return cl;
+  }
   if (args[0] != "bake") throw UsageError("unknown command '" + args[0] + "' (try radbake --help)");
   cl.action = Action::Bake;
   BakeCommand& b = cl.bake;
 
-  using Setter = std::function<void(const std::string&)>;
-  const std::map<std::string, Setter> with_value = {
+  std::map<std::string, Setter> with_value = {
       {"--output", [&](const std::string& v) { b.output = v; }},
-      {"--density", [&](const std::string& v) { b.atlas.texel_density = float(parse_number("--density", v, 1e-6, 1e9)); }},
-      {"--max-page-size", [&](const std::string& v) { b.atlas.max_page_size = int(parse_integer("--max-page-size", v, 16, 16384)); }},
-      {"--padding", [&](const std::string& v) { b.atlas.padding = int(parse_integer("--padding", v, 0, 64)); }},
       {"--tolerance", [&](const std::string& v) { b.bake.solve.tolerance = parse_number("--tolerance", v, 1e-9, 1); }},
       {"--solver", [&](const std::string& v) {
          if (v == "shooting") b.bake.solve.solver = Solver::Shooting;
@@ -105,35 +200,20 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
       {"--patch-size", [&](const std::string& v) { b.bake.patches.block_size = int(parse_integer("--patch-size", v, 0, 16384)); }},
       {"--png-scale", [&](const std::string& v) { b.png_scale = v == "auto" ? 0.0f : float(parse_number("--png-scale", v, 1e-30, 1e30)); }},
   };
-  for (size_t i = 1; i < args.size(); ++i) {
-    std::string arg = args[i];
-    if (arg == "-h" || arg == "--help") {
-      cl.action = Action::Help;
-      return cl;
-    }
-    if (arg == "--quiet") { b.quiet = true; continue; }
-    if (arg == "--debug-dumps") { b.debug_dumps = true; continue; }
-    if (arg == "--no-ambient") { b.bake.solve.ambient_term = false; continue; }
-    if (arg.empty() || arg[0] != '-') {
-      if (!b.input.empty()) throw UsageError("unexpected argument '" + arg + "' (one scene per bake)");
-      b.input = arg;
-      continue;
-    }
-    std::string value;
-    bool inline_value = false;
-    if (arg == "-o") arg = "--output";
-    if (size_t eq = arg.find('='); arg.rfind("--", 0) == 0 && eq != std::string::npos) {
-      value = arg.substr(eq + 1);
-      arg = arg.substr(0, eq);
-      inline_value = true;
-    }
-    auto setter = with_value.find(arg);
-    if (setter == with_value.end()) throw UsageError("unknown option " + arg + " (see radbake --help)");
-    if (!inline_value) {
-      if (i + 1 >= args.size()) throw UsageError("option " + arg + " needs a value");
-      value = args[++i];
-    }
-    setter->second(value);
+  std::map<std::string, Flag> flags = {
+      {"--quiet", [&] { b.quiet = true; }},
+      {"--debug-dumps", [&] { b.debug_dumps = true; }},
+      {"--no-ambient", [&] { b.bake.solve.ambient_term = false; }},
+  };
+  atlas_options(b.atlas, with_value, flags);
+  bool help = false;
+  parse_options(args, with_value, flags, [&](const std::string& arg) {
+    if (!b.input.empty()) throw UsageError("unexpected argument '" + arg + "' (one scene per bake)");
+    b.input = arg;
+  }, help);
+  if (help) {
+    cl.action = Action::Help;
+    return cl;
   }
   if (b.input.empty()) throw UsageError("missing input scene (radbake bake SCENE.gltf -o OUTDIR)");
   if (b.output.empty()) throw UsageError("missing -o OUTDIR");
@@ -162,6 +242,11 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
       {"patch-size", b.bake.patches.block_size > 0 ? number(b.bake.patches.block_size) : "auto"},
       {"png-scale", b.png_scale > 0 ? number(b.png_scale) : "auto"},
       {"ambient", b.bake.solve.ambient_term ? "yes" : "no"},
+      {"rotate-charts", b.atlas.rotate_charts ? "yes" : "no"},
+      {"fit-page", b.atlas.fit_one_page ? "yes" : "no"},
+      {"lightmap-uvs", b.atlas.input_uvs == InputUvPolicy::KeepValid ? "keep-valid"
+                       : b.atlas.input_uvs == InputUvPolicy::KeepAll ? "keep" : "generate"},
+      {"chart-angle", number(b.atlas.max_chart_normal_deviation)},
   };
   return cl;
 }

@@ -25,11 +25,20 @@ struct BakeCommand {
   std::vector<std::pair<std::string, std::string>> effective;  // every option and its value, for the report
 };
 
-enum class Action { Bake, Help, Version };
+// `radbake uv`: the lightmap atlas alone, and what it is worth.
+struct UvCommand {
+  std::string input;
+  AtlasOptions atlas;
+  bool json = false;           // machine-readable statistics
+  int evaluate_texcoord = -1;  // measure the input's TEXCOORD_n as one page instead of unwrapping
+};
+
+enum class Action { Bake, Uv, Help, Version };
 
 struct CommandLine {
   Action action = Action::Help;
   BakeCommand bake;
+  UvCommand uv;
 };
 
 // Throws UsageError naming the offending argument.

@@ -6,6 +6,7 @@
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
+#include <nlohmann/json.hpp>
 
 #include "baker/bake.h"
 #include "baker/errors.h"
@@ -90,6 +91,63 @@ int run_bake(const radbake::BakeCommand& cmd) {
   return 0;
 }
 
+void print_stats(const radbake::Atlas& atlas, const radbake::UvCommand& cmd, double load_seconds) {
+  const radbake::AtlasStats& s = atlas.stats;
+  if (cmd.json) {
+    nlohmann::ordered_json j = {
+        {"input", cmd.input}, {"pages", atlas.pages.size()}, {"page_texels", s.page_texels},
+        {"covered_texels", s.covered_texels}, {"texel_density_per_m", atlas.texel_density},
+        {"density_lowered", atlas.density_lowered}, {"charts", s.charts}, {"utilisation", s.utilisation},
+        {"stretch_l2", s.stretch_l2}, {"stretch_max", s.stretch_max}, {"seam_length_m", s.seam_length},
+        {"overlapping_texels", s.overlapping_texels}, {"flipped_triangles", s.flipped_triangles},
+        {"padding_violations", s.padding_violations}, {"padding", cmd.atlas.padding}, {"seconds", s.seconds},
+        {"load_seconds", load_seconds}, {"warnings", atlas.warnings}};
+    std::printf("%s\n", j.dump(1).c_str());
+    return;
+  }
+  std::printf("radbake uv: %s\n", cmd.input.c_str());
+  std::printf("  pages               %zu (", atlas.pages.size());
+  for (size_t p = 0; p < atlas.pages.size(); ++p)
+    std::printf("%s%dx%d", p ? ", " : "", atlas.pages[p].width, atlas.pages[p].height);
+  std::printf(")\n");
+  if (cmd.evaluate_texcoord < 0)
+    std::printf("  texel density       %.4g texels/m%s\n", atlas.texel_density,
+                atlas.density_lowered ? " (lowered to fit one page)" : cmd.atlas.texel_density > 0 ? "" : " (automatic)");
+  std::printf("  charts              %zu\n", s.charts);
+  std::printf("  utilisation         %.1f%% (%zu covered texels of %zu)\n", 100 * s.utilisation, s.covered_texels,
+              s.page_texels);
+  std::printf("  L2 stretch          %.4f area-weighted, %.4f worst triangle (1 = none)\n", s.stretch_l2, s.stretch_max);
+  if (cmd.evaluate_texcoord < 0) std::printf("  seam length         %.3f m\n", s.seam_length);
+  std::printf("  overlapping texels  %zu\n", s.overlapping_texels);
+  std::printf("  flipped triangles   %zu\n", s.flipped_triangles);
+  std::printf("  padding violations  %zu (padding %d texels)\n", s.padding_violations, cmd.atlas.padding);
+  if (cmd.evaluate_texcoord < 0) std::printf("  time                %.3f s\n", s.seconds);
+  for (const std::string& w : atlas.warnings) std::fprintf(stderr, "radbake: warning: %s\n", w.c_str());
+}
+
+int run_uv(const radbake::UvCommand& cmd) {
+  using namespace radbake;
+  auto t = std::chrono::steady_clock::now();
+  LoadedScene loaded = load_gltf(cmd.input);
+  double load_seconds = seconds_since(t);
+  std::vector<MeshView> views = mesh_views(loaded.scene);
+  if (cmd.evaluate_texcoord < 0) {
+    print_stats(ensure_lightmap_uvs(views, cmd.atlas), cmd, load_seconds);
+    return 0;
+  }
+  std::vector<const Vec2*> uvs;
+  for (const MeshInstance& inst : loaded.scene.instances) {
+    const size_t set = size_t(cmd.evaluate_texcoord);
+    if (inst.texcoords.size() <= set || inst.texcoords[set].empty())
+      throw InputError("mesh '" + inst.name + "' has no TEXCOORD_" + std::to_string(set));
+    uvs.push_back(inst.texcoords[set].data());
+  }
+  Atlas layout = layout_from_uvs(views, uvs, cmd.atlas.max_page_size);
+  layout.stats = measure_atlas(views, layout, cmd.atlas.padding);
+  print_stats(layout, cmd, load_seconds);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -102,6 +160,7 @@ int main(int argc, char** argv) {
       case Action::Help: std::fputs(usage_text(), stdout); return 0;
       case Action::Version: std::puts("radbake 0.1.0"); return 0;
       case Action::Bake: return run_bake(cl.bake);
+      case Action::Uv: return run_uv(cl.uv);
     }
   } catch (const UsageError& e) {
     std::fprintf(stderr, "radbake: error: %s\n", e.what());

@@ -1,6 +1,7 @@
 #include "uv/atlas.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <map>
 #include <stdexcept>
@@ -46,8 +47,10 @@ AtlasMesh keep_own_uvs(const MeshView& mesh, int page, uint32_t& next_chart) {
   for (size_t v = 0; v < mesh.vertex_count; ++v) out.source_vertex[v] = uint32_t(v);
   out.triangles.assign(mesh.triangles, mesh.triangles + 3 * mesh.triangle_count);
   out.uvs.assign(mesh.lightmap_uvs, mesh.lightmap_uvs + mesh.vertex_count);
-  // One chart per mesh is enough here: the overlap check already treats the layout as given.
-  out.triangle_chart.assign(mesh.triangle_count, next_chart++);
+  uint32_t largest = 0;
+  out.triangle_chart = uv_islands(mesh, mesh.lightmap_uvs);
+  for (uint32_t& c : out.triangle_chart) largest = std::max(largest, c), c += next_chart;
+  next_chart += largest + 1;
   return out;
 }
 
@@ -70,22 +73,51 @@ AtlasMesh lay_out_charts(const MeshView& mesh, const std::vector<const Chart*>& 
   };
   for (size_t c = 0; c < charts.size(); ++c) {
     const Chart& chart = *charts[c];
-    const ChartPlacement& at = *placements[c];
     for (size_t i = 0; i < chart.triangles.size(); ++i) {
       uint32_t t = chart.triangles[i];
       out.triangle_chart[t] = first_chart + uint32_t(c);
       for (int k = 0; k < 3; ++k) {
-        Vec2 local = chart.corner_uv[3 * i + k];
-        Vec2 uv{(at.x + local.x * at.scale) / page.width, (at.y + local.y * at.scale) / page.height};
-        out.triangles[3 * t + k] = emit(mesh.triangles[3 * t + k], uint32_t(c), uv);
+        Vec2 texel = placed_corner(chart, *placements[c], 3 * i + size_t(k));
+        out.triangles[3 * t + k] =
+            emit(mesh.triangles[3 * t + k], uint32_t(c), {texel.x / float(page.width), texel.y / float(page.height)});
       }
     }
   }
-  // Degenerate triangles cover no texel; their corners sit at the page origin, inside the padding.
+  // Triangles without a chart cover no texel; their corners sit at the page origin, in the padding.
   for (size_t t = 0; t < mesh.triangle_count; ++t)
     if (out.triangle_chart[t] == UINT32_MAX)
       for (int k = 0; k < 3; ++k) out.triangles[3 * t + k] = emit(mesh.triangles[3 * t + k], UINT32_MAX, {0, 0});
   return out;
+}
+
+// Charts of every mesh that needs them, and the metres of seam between them.
+std::vector<Chart> make_charts(const std::vector<MeshView>& meshes, const std::vector<bool>& generate,
+                               const AtlasOptions& options, float density, double* seam_length) {
+  ChartOptions chart_options;
+  chart_options.max_normal_deviation_degrees = options.max_chart_normal_deviation;
+  chart_options.hard_edge_degrees = options.hard_edge_angle;
+  // Below about 4 x 4 texels a chart holds less than its padding costs.
+  chart_options.small_chart_area = 16.0f / (density * density);
+  std::vector<Chart> charts;
+  for (size_t m = 0; m < meshes.size(); ++m) {
+    if (!generate[m]) continue;
+    HalfEdgeMesh hm = build_half_edge_mesh(meshes[m]);
+    int count = 0;
+    std::vector<int> chart_of_face = grow_charts(hm, chart_options, &count);
+    std::vector<Chart> mine = flatten_charts(hm, chart_of_face, count, uint32_t(m), options.rotate_charts);
+    // Seams: mesh edges whose two faces ended up in different charts.
+    std::vector<int> final_chart(meshes[m].triangle_count, -1);
+    for (size_t c = 0; c < mine.size(); ++c)
+      for (uint32_t t : mine[c].triangles) final_chart[t] = int(c);
+    for (auto e : hm.mesh.edges()) {
+      if (e.is_boundary()) continue;
+      int a = final_chart[hm.input_triangle[size_t(e.h0().face().idx())]];
+      int b = final_chart[hm.input_triangle[size_t(e.h1().face().idx())]];
+      if (a != b) *seam_length += double(hm.mesh.calc_edge_length(e));
+    }
+    charts.insert(charts.end(), std::make_move_iterator(mine.begin()), std::make_move_iterator(mine.end()));
+  }
+  return charts;
 }
 
 }  // namespace
@@ -95,46 +127,63 @@ Atlas ensure_lightmap_uvs(const std::vector<MeshView>& meshes, const AtlasOption
     throw std::invalid_argument("maximum page size must be 16..16384 texels");
   if (options.padding < 0 || options.padding > 64) throw std::invalid_argument("padding must be 0..64 texels");
   if (!(options.texel_density >= 0)) throw std::invalid_argument("texel density must be positive");
+  const auto start = std::chrono::steady_clock::now();
 
   Atlas atlas;
   atlas.meshes.resize(meshes.size());
+  atlas.requested_density = options.texel_density;
   const int page_size = options.max_page_size;
   double total_area = 0;
   for (const MeshView& m : meshes) total_area += world_area(m);
-  // Auto density aims for 60% of one page: what the shelf packer reaches on box-like scenes.
-  const float auto_fill = 0.6f;
-  const float auto_density = float(page_size * std::sqrt(auto_fill / std::max(total_area, 1e-12)));
-  float density = options.texel_density > 0 ? options.texel_density : auto_density;
+  // A first guess for the automatic density: 70% of one page, what the packer usually reaches.
+  const float guess = float(page_size * std::sqrt(0.7 / std::max(total_area, 1e-12)));
+  float density = options.texel_density > 0 ? options.texel_density : guess;
 
   std::vector<int> own_page_side(meshes.size(), 0);
-  std::vector<Chart> charts;
+  std::vector<bool> generate(meshes.size(), true);
   for (size_t m = 0; m < meshes.size(); ++m) {
-    if (meshes[m].lightmap_uvs) {
-      int side = page_side_for_own_uvs(meshes[m], density, page_size);
-      std::string problem = lightmap_uv_problem(meshes[m], side);
-      if (problem.empty()) {
-        own_page_side[m] = side;
-        continue;
-      }
-      atlas.warnings.push_back("mesh '" + meshes[m].name + "': " + problem + "; generating lightmap UVs");
+    if (!meshes[m].lightmap_uvs || options.input_uvs == InputUvPolicy::Generate) continue;
+    int side = page_side_for_own_uvs(meshes[m], density, page_size);
+    std::string problem = lightmap_uv_problem(meshes[m], side);
+    if (problem.empty() || options.input_uvs == InputUvPolicy::KeepAll) {
+      if (!problem.empty()) atlas.warnings.push_back("mesh '" + meshes[m].name + "': " + problem + "; used anyway");
+      own_page_side[m] = side;
+      generate[m] = false;
+      continue;
     }
-    std::vector<Chart> mine = planar_charts(meshes[m], uint32_t(m));
-    charts.insert(charts.end(), std::make_move_iterator(mine.begin()), std::make_move_iterator(mine.end()));
+    atlas.warnings.push_back("mesh '" + meshes[m].name + "': " + problem + "; generating lightmap UVs");
   }
+  double seam_length = 0;
+  std::vector<Chart> charts = make_charts(meshes, generate, options, density, &seam_length);
 
-  PackResult packed = pack_charts(charts, meshes.size(), density, page_size, options.padding);
-  // Auto density backs off until everything generated fits the one page it promised; when even
-  // one-texel charts cannot share a page (more charts than the page has room for), it gives up
-  // on one page rather than shrinking forever.
-  for (int attempt = 0; options.texel_density <= 0 && packed.pages.size() > 1 && attempt < 200; ++attempt) {
-    density *= 0.95f;
-    packed = pack_charts(charts, meshes.size(), density, page_size, options.padding);
-  }
-  if (options.texel_density <= 0 && packed.pages.size() > 1) {
-    density = auto_density;
-    packed = pack_charts(charts, meshes.size(), density, page_size, options.padding);
-    atlas.warnings.push_back("the charts do not fit one " + std::to_string(page_size) + "-texel page at any density; using " +
-                             std::to_string(packed.pages.size()) + " pages");
+  auto pack = [&](float d) { return pack_charts(charts, meshes.size(), d, page_size, options.padding, options.rotate_charts); };
+  auto fits = [](const PackResult& r) { return r.pages.size() <= 1 && r.downscaled_meshes.empty(); };
+  PackResult packed = pack(density);
+  if (!charts.empty() && (options.texel_density <= 0 || (options.fit_one_page && !fits(packed)))) {
+    // The highest density that fits one page: widen a bracket round the first try, then bisect.
+    const float cap = options.texel_density > 0 ? options.texel_density : INFINITY;
+    float lo = 0, hi = 0;  // highest known to fit, lowest known not to
+    (fits(packed) ? lo : hi) = density;
+    for (int step = 0; step < 40 && (lo == 0 || hi == 0); ++step) {
+      if (lo > 0 && lo >= cap) break;
+      float d = lo == 0 ? hi * 0.8f : std::min(lo * 1.25f, cap);
+      (fits(pack(d)) ? lo : hi) = d;
+    }
+    for (int step = 0; step < 6 && lo > 0 && hi > 0; ++step) {
+      float d = 0.5f * (lo + hi);
+      (fits(pack(d)) ? lo : hi) = d;
+    }
+    if (lo > 0) {
+      density = lo;
+      packed = pack(density);
+      atlas.density_lowered = options.texel_density > 0 && density < options.texel_density;
+      if (atlas.density_lowered)
+        atlas.warnings.push_back("the density was lowered from " + std::to_string(options.texel_density) + " to " +
+                                 std::to_string(density) + " texels/m to fit one page");
+    } else {
+      atlas.warnings.push_back("the charts do not fit one " + std::to_string(page_size) +
+                               "-texel page at any density; using " + std::to_string(packed.pages.size()) + " pages");
+    }
   }
   atlas.texel_density = density;
   atlas.pages = packed.pages;
@@ -157,11 +206,13 @@ Atlas ensure_lightmap_uvs(const std::vector<MeshView>& meshes, const AtlasOption
     }
     int page = placements_of[m].empty() ? 0 : placements_of[m][0]->page;
     if (atlas.pages.empty()) atlas.pages.push_back({16, 16});  // only degenerate triangles
-    atlas.meshes[m] = lay_out_charts(meshes[m], charts_of[m], placements_of[m], atlas.pages[size_t(page)], page,
-                                     next_chart);
+    atlas.meshes[m] = lay_out_charts(meshes[m], charts_of[m], placements_of[m], atlas.pages[size_t(page)], page, next_chart);
     next_chart += uint32_t(charts_of[m].size());
   }
   atlas.chart_count = next_chart;
+  atlas.stats = measure_atlas(meshes, atlas, options.padding);
+  atlas.stats.seam_length = seam_length;
+  atlas.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return atlas;
 }
 

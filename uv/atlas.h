@@ -1,6 +1,7 @@
 // Lightmap UVs for every mesh instance: the scene's own TEXCOORD_1 when it is usable, otherwise
-// charts generated here and packed into pages. Takes pointers and counts (as xatlas's MeshDecl
-// does), never a file format's types.
+// an atlas generated here (charts grown on a half-edge mesh, flattened by least-squares conformal
+// maps, packed into pages). Takes pointers and counts, as xatlas's MeshDecl does, never a file
+// format's types.
 #pragma once
 
 #include <cstdint>
@@ -20,10 +21,21 @@ struct MeshView {
   std::string name;                    // for messages
 };
 
+enum class InputUvPolicy {
+  KeepValid,  // use the input's TEXCOORD_1 where it is valid; generate (and report) where it is not
+  KeepAll,    // use it even where it is not valid (reported); generate only where there is none
+  Generate,   // ignore it and generate everywhere
+};
+
 struct AtlasOptions {
-  float texel_density = 0;   // texels per metre; 0 picks the density that fills one page
+  float texel_density = 0;   // texels per metre; 0 picks the highest density that fits one page
   int max_page_size = 1024;  // texels per page side, 16..16384
   int padding = 2;           // empty texels kept between charts (bilinear reads one, dilation fills)
+  bool rotate_charts = true; // charts may turn (to their smallest rectangle, and by 90 degrees to pack)
+  bool fit_one_page = false; // with a density given: lower it until everything fits one page
+  InputUvPolicy input_uvs = InputUvPolicy::KeepValid;
+  float max_chart_normal_deviation = 50;  // degrees: a chart's faces stay within this cone
+  float hard_edge_angle = 40;             // degrees: edges folding more are always seams
 };
 
 struct AtlasPage {
@@ -36,16 +48,34 @@ struct AtlasMesh {
   std::vector<uint32_t> source_vertex;   // output vertex -> input vertex
   std::vector<uint32_t> triangles;       // same triangle order as the input, into output vertices
   std::vector<Vec2> uvs;                 // per output vertex, page coordinates in [0, 1]
-  std::vector<uint32_t> triangle_chart;  // chart of each triangle, unique across the atlas
+  std::vector<uint32_t> triangle_chart;  // chart of each triangle, unique across the atlas; UINT32_MAX
+                                         // for triangles that cover nothing (zero area)
   int page = 0;
-  bool kept_input_uvs = false;  // the input's TEXCOORD_1 was valid and is used unchanged
+  bool kept_input_uvs = false;  // the input's TEXCOORD_1 is used unchanged
+};
+
+// What the atlas is worth, measured (uv/atlas_stats.cpp).
+struct AtlasStats {
+  size_t charts = 0;
+  double utilisation = 0;      // covered texels / page texels, over all pages
+  double stretch_l2 = 0;       // Sander et al. 2001 L2 stretch over the whole atlas, 1 = none
+  double stretch_max = 0;      // the worst triangle's L2 stretch, same normalisation
+  double seam_length = 0;      // metres of edges where charts meet
+  size_t overlapping_texels = 0;   // texels covered by two charts
+  size_t flipped_triangles = 0;    // triangles wound against the rest of their chart
+  size_t padding_violations = 0;   // texels with another chart's texel closer than the padding
+  size_t covered_texels = 0, page_texels = 0;
+  double seconds = 0;
 };
 
 struct Atlas {
   std::vector<AtlasPage> pages;
   std::vector<AtlasMesh> meshes;  // parallel to the input meshes
   float texel_density = 0;        // texels per metre used for generated charts
+  float requested_density = 0;    // what the options asked for (0: automatic)
+  bool density_lowered = false;   // fit_one_page lowered the density
   size_t chart_count = 0;
+  AtlasStats stats;
   std::vector<std::string> warnings;
 };
 
@@ -53,5 +83,17 @@ Atlas ensure_lightmap_uvs(const std::vector<MeshView>& meshes, const AtlasOption
 
 // Why a mesh's own TEXCOORD_1 cannot be used at a page of `resolution` texels, or "" when it can.
 std::string lightmap_uv_problem(const MeshView& mesh, int resolution);
+
+// Measures any layout (generated, kept, or a peer's) over these meshes; `padding` is what the
+// layout promises. Chart ids come from the layout's triangle_chart.
+AtlasStats measure_atlas(const std::vector<MeshView>& meshes, const Atlas& atlas, int padding);
+
+// A layout made elsewhere, as an Atlas to measure: every mesh's `uvs` in one page_size page,
+// charts from uv_islands.
+Atlas layout_from_uvs(const std::vector<MeshView>& meshes, const std::vector<const Vec2*>& uvs, int page_size);
+
+// Chart ids for a layout that has none: triangles joined by an edge whose ends agree in position
+// and UV form one chart (for measuring UVs made elsewhere).
+std::vector<uint32_t> uv_islands(const MeshView& mesh, const Vec2* uvs);
 
 }  // namespace radbake

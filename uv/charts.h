@@ -1,4 +1,4 @@
-// Internal to uv/: charts in their own plane before they are scaled and packed.
+// Internal to uv/: the stages between a mesh and a packed atlas.
 #pragma once
 
 #include <cstdint>
@@ -6,24 +6,40 @@
 
 #include "baker/math.h"
 #include "uv/atlas.h"
+#include "uv/half_edge_mesh.h"
 
 namespace radbake {
 
+// A chart flattened into its own plane, before it is scaled to texels and packed.
 struct Chart {
   uint32_t mesh = 0;
-  std::vector<uint32_t> triangles;  // triangle indices of the mesh
-  std::vector<Vec2> corner_uv;      // three per triangle, metres, chart minimum at (0, 0)
-  Vec2 extent;                      // metres
+  std::vector<uint32_t> triangles;  // input triangle indices
+  std::vector<Vec2> corner_uv;      // three per triangle in the input's corner order, metres
+  Vec2 extent;                      // metres; the minimum corner is at (0, 0)
 };
 
-// Groups edge-connected coplanar triangles into charts, each flattened by projection onto its
-// plane and turned so its bounding rectangle is smallest. Degenerate triangles get no chart.
-std::vector<Chart> planar_charts(const MeshView& mesh, uint32_t mesh_index);
+struct ChartOptions {
+  float max_normal_deviation_degrees = 50;  // a chart's faces stay within this cone of its normal
+  float hard_edge_degrees = 40;             // edges folding more than this are always seams
+  float small_chart_area = 0;               // m^2; charts smaller than this merge into a neighbour
+};
+
+// Groups faces into charts: region growing from the largest faces over edges that are not hard,
+// keeping each chart's normals in a cone, then folding tiny charts into a neighbour. Returns the
+// chart of each OpenMesh face (-1 for none) and sets chart_count.
+std::vector<int> grow_charts(const HalfEdgeMesh& mesh, const ChartOptions& options, int* chart_count);
+
+// Flattens each chart: planar ones by projection, curved ones by least-squares conformal maps
+// (Levy et al. 2002) solved with Eigen. A chart whose map flips or overlaps itself is split in two
+// until each piece maps cleanly.
+std::vector<Chart> flatten_charts(const HalfEdgeMesh& mesh, const std::vector<int>& chart_of_face, int chart_count,
+                                  uint32_t mesh_index, bool may_rotate);
 
 struct ChartPlacement {
   int page = -1;
-  int x = 0, y = 0;  // texel offset of the chart's minimum corner
-  float scale = 1;   // texels per metre for this chart
+  int x = 0, y = 0;       // texel offset of the chart's minimum corner
+  float scale = 1;        // texels per metre for this chart
+  int quarter_turns = 0;  // rotation by 90 degrees counter-clockwise, 0..3, about the minimum corner
 };
 
 struct PackResult {
@@ -32,8 +48,12 @@ struct PackResult {
   std::vector<uint32_t> downscaled_meshes;  // meshes shrunk to fit one page
 };
 
-// Packs charts into pages of at most page_size texels, keeping all charts of one mesh on one page.
-PackResult pack_charts(const std::vector<Chart>& charts, size_t mesh_count, float texel_density,
-                       int page_size, int padding);
+// Packs charts into pages of at most page_size texels, keeping all charts of one mesh on one page,
+// by Levy et al.'s "Tetris" packing of each chart's texel footprint against a horizon.
+PackResult pack_charts(const std::vector<Chart>& charts, size_t mesh_count, float texel_density, int page_size,
+                       int padding, bool may_rotate);
+
+// Where corner k of chart triangle i lands in the page, in texels.
+Vec2 placed_corner(const Chart& chart, const ChartPlacement& at, size_t corner);
 
 }  // namespace radbake

@@ -1,0 +1,318 @@
+#include <Eigen/Sparse>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <unordered_map>
+
+#include "uv/charts.h"
+#include "uv/texel_coverage.h"
+
+namespace radbake {
+namespace {
+
+using FaceList = std::vector<int>;
+
+// A chart's vertices numbered locally, with their positions.
+struct LocalChart {
+  FaceList faces;
+  std::unordered_map<int, int> local;  // OpenMesh vertex -> local index
+  std::vector<int> vertex;             // local index -> OpenMesh vertex
+  std::vector<Vec3> position;
+  std::vector<Vec2> uv;                // metres
+  Vec3 normal;                         // area-weighted mean, unit
+};
+
+LocalChart gather(const HalfEdgeMesh& hm, const FaceList& faces) {
+  LocalChart c;
+  c.faces = faces;
+  Vec3 n{};
+  for (int f : faces) {
+    n += hm.face_normal[size_t(f)] * hm.face_area[size_t(f)];
+    for (auto v : hm.mesh.fv_range(HalfEdgeTriMesh::FaceHandle(f))) {
+      auto [it, inserted] = c.local.emplace(v.idx(), int(c.vertex.size()));
+      if (inserted) {
+        c.vertex.push_back(v.idx());
+        c.position.push_back(to_vec3(hm.mesh.point(v)));
+      }
+    }
+  }
+  c.normal = normalize(n);
+  if (!(length(c.normal) > 0.5f)) c.normal = hm.face_normal[size_t(faces[0])];
+  return c;
+}
+
+// The chart's face corners as local vertex indices, in OpenMesh's order (counter-clockwise).
+void corners(const HalfEdgeMesh& hm, const LocalChart& c, int f, int out[3]) {
+  int k = 0;
+  for (auto v : hm.mesh.fv_range(HalfEdgeTriMesh::FaceHandle(f))) out[k++] = c.local.at(v.idx());
+}
+
+void plane_axes(Vec3 n, Vec3& t, Vec3& b) { orthonormal_basis(n, t, b); }
+
+void project(LocalChart& c) {
+  Vec3 t, b;
+  plane_axes(c.normal, t, b);
+  c.uv.resize(c.position.size());
+  for (size_t i = 0; i < c.position.size(); ++i) c.uv[i] = {dot(c.position[i], t), dot(c.position[i], b)};
+}
+
+// Least-squares conformal map with two vertices pinned at their projections: the two farthest
+// apart along the chart's main axis, which fixes scale and turn without bending the map.
+bool conformal_map(const HalfEdgeMesh& hm, LocalChart& c) {
+  project(c);  // pins and the fallback frame come from the projection
+  const int n = int(c.vertex.size());
+  Vec2 mean{};
+  for (Vec2 p : c.uv) mean = mean + p;
+  mean = mean * (1.0f / float(n));
+  double sxx = 0, sxy = 0, syy = 0;
+  for (Vec2 p : c.uv) {
+    Vec2 d = p - mean;
+    sxx += d.x * d.x, sxy += d.x * d.y, syy += d.y * d.y;
+  }
+  double angle = 0.5 * std::atan2(2 * sxy, sxx - syy);
+  Vec2 axis{float(std::cos(angle)), float(std::sin(angle))};
+  int pin[2] = {0, 0};
+  float lo = INFINITY, hi = -INFINITY;
+  for (int i = 0; i < n; ++i) {
+    float s = c.uv[size_t(i)].x * axis.x + c.uv[size_t(i)].y * axis.y;
+    if (s < lo) lo = s, pin[0] = i;
+    if (s > hi) hi = s, pin[1] = i;
+  }
+  if (pin[0] == pin[1]) return false;
+
+  std::vector<int> column(size_t(n), -1);
+  int free = 0;
+  for (int i = 0; i < n; ++i)
+    if (i != pin[0] && i != pin[1]) column[size_t(i)] = free++;
+  std::vector<Eigen::Triplet<double>> entries;
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(2 * Eigen::Index(c.faces.size()));
+  int row = 0;
+  for (int f : c.faces) {
+    int v[3];
+    corners(hm, c, f, v);
+    // The triangle in its own plane: q0 at the origin, q1 on the x axis.
+    Vec3 p0 = c.position[size_t(v[0])], p1 = c.position[size_t(v[1])], p2 = c.position[size_t(v[2])];
+    Vec3 ex = normalize(p1 - p0), ey = cross(hm.face_normal[size_t(f)], ex);
+    double q[3][2] = {{0, 0}, {dot(p1 - p0, ex), 0}, {dot(p2 - p0, ex), dot(p2 - p0, ey)}};
+    double area = 0.5 * q[1][0] * q[2][1];
+    if (!(area > 0)) continue;
+    double w = 1.0 / (2.0 * std::sqrt(area));
+    // Cauchy-Riemann on the linear map: u_x = v_y and u_y = -v_x, with grad f = sum f_j perp(e_j) / 2A.
+    for (int j = 0; j < 3; ++j) {
+      double ex_j = q[(j + 2) % 3][0] - q[(j + 1) % 3][0], ey_j = q[(j + 2) % 3][1] - q[(j + 1) % 3][1];
+      double cu[2] = {-ey_j * w, ex_j * w}, cv[2] = {-ex_j * w, -ey_j * w};
+      int col = column[size_t(v[j])];
+      for (int e = 0; e < 2; ++e) {
+        if (col >= 0) {
+          entries.emplace_back(row + e, 2 * col, cu[e]);
+          entries.emplace_back(row + e, 2 * col + 1, cv[e]);
+        } else {
+          Vec2 fixed = c.uv[size_t(v[j])];
+          rhs[row + e] -= cu[e] * fixed.x + cv[e] * fixed.y;
+        }
+      }
+    }
+    row += 2;
+  }
+  Eigen::SparseMatrix<double> a(row, 2 * free);
+  a.setFromTriplets(entries.begin(), entries.end());
+  Eigen::SparseMatrix<double> normal = a.transpose() * a;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(normal);
+  if (solver.info() != Eigen::Success) return false;
+  Eigen::VectorXd x = solver.solve(a.transpose() * rhs.head(row));
+  if (solver.info() != Eigen::Success || !x.allFinite()) return false;
+  for (int i = 0; i < n; ++i)
+    if (column[size_t(i)] >= 0) c.uv[size_t(i)] = {float(x[2 * column[size_t(i)]]), float(x[2 * column[size_t(i)] + 1])};
+  return true;
+}
+
+double uv_area(const HalfEdgeMesh& hm, const LocalChart& c, int f) {
+  int v[3];
+  corners(hm, c, f, v);
+  return 0.5 * double(cross2(c.uv[size_t(v[1])] - c.uv[size_t(v[0])], c.uv[size_t(v[2])] - c.uv[size_t(v[0])]));
+}
+
+// True when every face keeps its orientation and no two overlap: rasterised on a fine grid, the
+// pieces in any cell add up to at most the cell.
+bool maps_cleanly(const HalfEdgeMesh& hm, const LocalChart& c) {
+  Vec2 lo{INFINITY, INFINITY}, hi{-INFINITY, -INFINITY};
+  double total = 0;
+  for (Vec2 p : c.uv) lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)}, hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+  for (int f : c.faces) {
+    double a = uv_area(hm, c, f);
+    if (!(a > 0)) return false;
+    total += a;
+  }
+  if (c.faces.size() == 1) return true;
+  // About 16 cells per face on average, at most 512 a side.
+  float extent = std::max(hi.x - lo.x, hi.y - lo.y);
+  float cell = float(std::sqrt(total / (16.0 * double(c.faces.size()))));
+  cell = std::max(cell, extent / 512.0f);
+  int w = std::max(1, int(std::ceil((hi.x - lo.x) / cell)) + 1), h = std::max(1, int(std::ceil((hi.y - lo.y) / cell)) + 1);
+  std::vector<float> covered(size_t(w) * size_t(h), 0.0f);
+  bool clean = true;
+  for (int f : c.faces) {
+    int v[3];
+    corners(hm, c, f, v);
+    Vec2 g[3];
+    for (int k = 0; k < 3; ++k) g[k] = (c.uv[size_t(v[k])] - lo) * (1.0f / cell);
+    for_each_covered_texel(g[0], g[1], g[2], w, h, [&](const TexelPiece& piece) {
+      float& sum = covered[size_t(piece.y) * size_t(w) + size_t(piece.x)];
+      sum += piece.area;
+      clean &= sum <= 1.02f;
+    });
+    if (!clean) return false;
+  }
+  return true;
+}
+
+std::vector<FaceList> connected_parts(const HalfEdgeMesh& hm, const FaceList& faces) {
+  std::unordered_map<int, int> part;
+  for (int f : faces) part[f] = -1;
+  std::vector<FaceList> parts;
+  for (int seed : faces) {
+    if (part[seed] >= 0) continue;
+    FaceList stack{seed}, mine;
+    part[seed] = int(parts.size());
+    while (!stack.empty()) {
+      int f = stack.back();
+      stack.pop_back();
+      mine.push_back(f);
+      for (auto h : hm.mesh.fh_range(HalfEdgeTriMesh::FaceHandle(f))) {
+        auto opposite = h.opp();
+        if (opposite.is_boundary()) continue;
+        auto it = part.find(opposite.face().idx());
+        if (it == part.end() || it->second >= 0) continue;
+        it->second = int(parts.size());
+        stack.push_back(opposite.face().idx());
+      }
+    }
+    parts.push_back(std::move(mine));
+  }
+  return parts;
+}
+
+// Halves a chart across its longest extent (by face centroid) when it cannot be mapped whole.
+std::pair<FaceList, FaceList> halve(const HalfEdgeMesh& hm, const FaceList& faces) {
+  Vec3 lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
+  std::vector<Vec3> centre(faces.size());
+  for (size_t i = 0; i < faces.size(); ++i) {
+    Vec3 s{};
+    for (auto v : hm.mesh.fv_range(HalfEdgeTriMesh::FaceHandle(faces[i]))) s += to_vec3(hm.mesh.point(v));
+    centre[i] = s / 3.0f;
+    for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], centre[i][a]), hi[a] = std::max(hi[a], centre[i][a]);
+  }
+  int axis = 0;
+  for (int a = 1; a < 3; ++a)
+    if (hi[a] - lo[a] > hi[axis] - lo[axis]) axis = a;
+  std::vector<size_t> order(faces.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return centre[a][axis] < centre[b][axis]; });
+  std::pair<FaceList, FaceList> out;
+  for (size_t k = 0; k < order.size(); ++k) (k < order.size() / 2 ? out.first : out.second).push_back(faces[order[k]]);
+  return out;
+}
+
+std::vector<Vec2> convex_hull(std::vector<Vec2> points) {
+  std::sort(points.begin(), points.end(), [](Vec2 a, Vec2 b) { return a.x != b.x ? a.x < b.x : a.y < b.y; });
+  if (points.size() < 3) return points;
+  std::vector<Vec2> hull(2 * points.size());
+  size_t k = 0;
+  for (size_t i = 0; i < points.size(); ++i) {
+    while (k >= 2 && cross2(hull[k - 1] - hull[k - 2], points[i] - hull[k - 2]) <= 0) --k;
+    hull[k++] = points[i];
+  }
+  for (size_t i = points.size() - 1, t = k + 1; i > 0; --i) {
+    while (k >= t && cross2(hull[k - 1] - hull[k - 2], points[i - 1] - hull[k - 2]) <= 0) --k;
+    hull[k++] = points[i - 1];
+  }
+  hull.resize(k - 1);
+  return hull;
+}
+
+// Turns the chart so its bounding rectangle is smallest (a side of the best rectangle lies along
+// a hull edge) when charts may turn, and moves its minimum corner to the origin.
+void fit_bounding_rectangle(Chart& chart, bool may_rotate) {
+  Vec2 best_axis{1, 0};
+  if (may_rotate) {
+    std::vector<Vec2> hull = convex_hull(chart.corner_uv);
+    float best_area = INFINITY;
+    for (size_t i = 0; i < hull.size(); ++i) {
+      Vec2 e = hull[(i + 1) % hull.size()] - hull[i];
+      float len = std::sqrt(e.x * e.x + e.y * e.y);
+      if (len <= 0) continue;
+      Vec2 u = e * (1 / len);
+      float lo_u = INFINITY, hi_u = -INFINITY, lo_v = INFINITY, hi_v = -INFINITY;
+      for (Vec2 p : hull) {
+        float pu = p.x * u.x + p.y * u.y, pv = -p.x * u.y + p.y * u.x;
+        lo_u = std::min(lo_u, pu), hi_u = std::max(hi_u, pu);
+        lo_v = std::min(lo_v, pv), hi_v = std::max(hi_v, pv);
+      }
+      float area = (hi_u - lo_u) * (hi_v - lo_v);
+      if (area < best_area * 0.9999f) best_area = area, best_axis = u;
+    }
+  }
+  Vec2 lo{INFINITY, INFINITY}, hi{-INFINITY, -INFINITY};
+  for (Vec2& p : chart.corner_uv) {
+    p = {p.x * best_axis.x + p.y * best_axis.y, -p.x * best_axis.y + p.y * best_axis.x};
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+  }
+  for (Vec2& p : chart.corner_uv) p = p - lo;
+  chart.extent = hi - lo;
+}
+
+Chart make_chart(const HalfEdgeMesh& hm, const LocalChart& c, uint32_t mesh_index, bool may_rotate) {
+  // Conformal maps keep angles, not area: scale the chart to its surface area so that a texel
+  // covers the same area everywhere.
+  double area_3d = 0, area_uv = 0;
+  for (int f : c.faces) area_3d += hm.face_area[size_t(f)], area_uv += uv_area(hm, c, f);
+  float scale = area_uv > 0 ? float(std::sqrt(area_3d / area_uv)) : 1.0f;
+  Chart chart;
+  chart.mesh = mesh_index;
+  std::vector<int> faces = c.faces;
+  std::sort(faces.begin(), faces.end(), [&](int a, int b) { return hm.input_triangle[size_t(a)] < hm.input_triangle[size_t(b)]; });
+  for (int f : faces) {
+    uint32_t t = hm.input_triangle[size_t(f)];
+    chart.triangles.push_back(t);
+    for (int k = 0; k < 3; ++k) chart.corner_uv.push_back(c.uv[size_t(c.local.at(hm.corner_vertex[3 * t + k]))] * scale);
+  }
+  fit_bounding_rectangle(chart, may_rotate);
+  return chart;
+}
+
+}  // namespace
+
+std::vector<Chart> flatten_charts(const HalfEdgeMesh& hm, const std::vector<int>& chart_of_face, int chart_count,
+                                  uint32_t mesh_index, bool may_rotate) {
+  std::vector<FaceList> pending{size_t(chart_count)};
+  for (size_t f = 0; f < chart_of_face.size(); ++f)
+    if (chart_of_face[f] >= 0) pending[size_t(chart_of_face[f])].push_back(int(f));
+  const float cos_planar = std::cos(0.5f * 3.14159265f / 180.0f);
+  std::vector<Chart> out;
+  while (!pending.empty()) {
+    FaceList faces = std::move(pending.back());
+    pending.pop_back();
+    if (faces.empty()) continue;
+    for (FaceList& part : connected_parts(hm, faces)) {
+      LocalChart c = gather(hm, part);
+      bool planar = std::all_of(part.begin(), part.end(),
+                                [&](int f) { return dot(hm.face_normal[size_t(f)], c.normal) >= cos_planar; });
+      bool mapped = planar ? (project(c), true) : conformal_map(hm, c);
+      if (part.size() == 1 || (mapped && maps_cleanly(hm, c))) {
+        if (!mapped) project(c);
+        out.push_back(make_chart(hm, c, mesh_index, may_rotate));
+        continue;
+      }
+      auto [a, b] = halve(hm, part);
+      pending.push_back(std::move(a));
+      pending.push_back(std::move(b));
+    }
+  }
+  // The order charts are produced in depends only on the mesh: sort for stable output anyway.
+  std::sort(out.begin(), out.end(), [](const Chart& a, const Chart& b) { return a.triangles[0] < b.triangles[0]; });
+  return out;
+}
+
+}  // namespace radbake
