@@ -193,6 +193,42 @@ std::vector<FaceList> connected_parts(const HalfEdgeMesh& hm, const FaceList& fa
   return parts;
 }
 
+// How many closed loops the chart's border makes.
+int boundary_loops(const HalfEdgeMesh& hm, const FaceList& faces) {
+  std::unordered_map<int, bool> in_chart;
+  for (int f : faces) in_chart[f] = true;
+  auto outside = [&](HalfEdgeTriMesh::HalfedgeHandle h) {
+    auto o = hm.mesh.opposite_halfedge_handle(h);
+    return hm.mesh.is_boundary(o) || !in_chart.count(hm.mesh.face_handle(o).idx());
+  };
+  // Border half-edges of the chart, linked head to tail (at a vertex where the border touches
+  // itself several continue; any will do for counting loops).
+  std::unordered_map<int, std::vector<int>> leaving;  // from vertex -> border half-edges
+  std::vector<int> border;
+  for (int f : faces)
+    for (auto h : hm.mesh.fh_range(HalfEdgeTriMesh::FaceHandle(f)))
+      if (outside(h)) {
+        border.push_back(h.idx());
+        leaving[h.from().idx()].push_back(h.idx());
+      }
+  std::unordered_map<int, bool> seen;
+  int loops = 0;
+  for (int start : border) {
+    if (seen[start]) continue;
+    ++loops;
+    for (int h = start; !seen[h];) {
+      seen[h] = true;
+      int to = hm.mesh.to_vertex_handle(HalfEdgeTriMesh::HalfedgeHandle(h)).idx();
+      int next = -1;
+      for (int candidate : leaving[to])
+        if (!seen[candidate]) next = candidate;
+      if (next < 0) break;
+      h = next;
+    }
+  }
+  return loops;
+}
+
 // Halves a chart across its longest extent (by face centroid) when it cannot be mapped whole.
 std::pair<FaceList, FaceList> halve(const HalfEdgeMesh& hm, const FaceList& faces) {
   Vec3 lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
@@ -299,7 +335,10 @@ std::vector<Chart> flatten_charts(const HalfEdgeMesh& hm, const std::vector<int>
       LocalChart c = gather(hm, part);
       bool planar = std::all_of(part.begin(), part.end(),
                                 [&](int f) { return dot(hm.face_normal[size_t(f)], c.normal) >= cos_planar; });
-      bool mapped = planar ? (project(c), true) : conformal_map(hm, c);
+      // A curved chart must be a disc: a ring (the top of a torus, a band round a cylinder)
+      // flattens into an annulus whose hole no packer can use, and rings are what fold.
+      bool disc = planar || boundary_loops(hm, part) <= 1;
+      bool mapped = disc && (planar ? (project(c), true) : conformal_map(hm, c));
       if (part.size() == 1 || (mapped && maps_cleanly(hm, c))) {
         if (!mapped) project(c);
         out.push_back(make_chart(hm, c, mesh_index, may_rotate));

@@ -65,10 +65,11 @@ struct Spot {
   int x = -1, y = INT_MAX;
 };
 
-// The lowest place the footprint can drop to, scanning every column (Levy et al. 2002, "Tetris").
-Spot lowest_spot(const Page& page, const Footprint& fp, int padding) {
+// Where the footprint drops best (Levy et al. 2002, "Tetris"): at each column it falls onto the
+// horizon; of those drops, the one that leaves the least empty space under it, lowest on ties.
+Spot best_drop(const Page& page, const Footprint& fp, int padding) {
   Spot best;
-  int best_top = INT_MAX;
+  double best_score = INFINITY;
   for (int x = 0; x + fp.width <= page.size; ++x) {
     int y = 0;
     for (int j = 0; j < fp.width + 2 * padding; ++j) {
@@ -76,9 +77,13 @@ Spot lowest_spot(const Page& page, const Footprint& fp, int padding) {
       if (column < 0 || column >= page.size || fp.pad_bottom[size_t(j)] == INT_MAX) continue;
       y = std::max(y, page.horizon[size_t(column)] - fp.pad_bottom[size_t(j)]);
     }
-    int top = y + fp.height;
-    if (top > page.size) continue;
-    if (y < best.y || (y == best.y && top < best_top)) best = {x, y}, best_top = top;
+    if (y + fp.height > page.size) continue;
+    double waste = 0;
+    for (int j = 0; j < fp.width; ++j)
+      if (fp.cover_bottom[size_t(j)] != INT_MAX) waste += y + fp.cover_bottom[size_t(j)] - page.horizon[size_t(x + j)];
+    // Height counts too, so an empty page fills from the bottom instead of anywhere.
+    double score = waste + 0.25 * double(y) * fp.width;
+    if (score < best_score) best_score = score, best = {x, y};
   }
   return best;
 }
@@ -133,41 +138,65 @@ PackResult pack_charts(const std::vector<Chart>& charts, size_t mesh_count, floa
     return mesh_area[a] * mesh_scale[a] * mesh_scale[a] > mesh_area[b] * mesh_scale[b] * mesh_scale[b];
   });
 
-  std::vector<Page> pages;
   const int turns = may_rotate ? 2 : 1;  // upright and a quarter turn; half turns rarely fit better
-  for (size_t m : mesh_order) {
-    if (charts_of_mesh[m].empty()) continue;
-    std::vector<size_t> order = charts_of_mesh[m];
-    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
-      return charts[a].extent.x * charts[a].extent.y > charts[b].extent.x * charts[b].extent.y;
-    });
-    std::vector<std::vector<Footprint>> shapes(order.size());
-    for (size_t k = 0; k < order.size(); ++k)
-      for (int r = 0; r < turns; ++r) shapes[k].push_back(footprint(charts[order[k]], mesh_scale[m], r, padding));
-    for (size_t p = 0; p <= pages.size(); ++p) {
-      if (p == pages.size()) pages.push_back({page_size, std::vector<int>(size_t(page_size), 0), 0, 0});
-      Page trial = pages[p];
-      std::vector<ChartPlacement> placed(order.size());
-      bool fits = true;
-      for (size_t k = 0; k < order.size() && fits; ++k) {
-        Spot best;
-        int best_turn = 0, best_top = INT_MAX;
-        for (int r = 0; r < turns; ++r) {
-          Spot s = lowest_spot(trial, shapes[k][size_t(r)], padding);
-          int top = s.x < 0 ? INT_MAX : s.y + shapes[k][size_t(r)].height;
-          if (s.x >= 0 && (top < best_top || (top == best_top && s.y < best.y))) best = s, best_turn = r, best_top = top;
-        }
-        if (best.x < 0) {
-          fits = false;
-          break;
-        }
-        settle(trial, shapes[k][size_t(best_turn)], best);
-        placed[k] = {int(p), best.x, best.y, mesh_scale[m], best_turn};
+  // Places `order` (charts, largest first) on `page`, or returns false leaving it as it was.
+  auto place_on = [&](Page& page, int page_index, const std::vector<size_t>& order) {
+    Page trial = page;
+    std::vector<ChartPlacement> placed(order.size());
+    for (size_t k = 0; k < order.size(); ++k) {
+      const Chart& chart = charts[order[k]];
+      const float scale = mesh_scale[chart.mesh];
+      Spot best;
+      int best_turn = 0, best_top = INT_MAX;
+      Footprint best_shape;
+      for (int r = 0; r < turns; ++r) {
+        Footprint shape = footprint(chart, scale, r, padding);
+        Spot s = best_drop(trial, shape, padding);
+        int top = s.x < 0 ? INT_MAX : s.y + shape.height;
+        if (s.x >= 0 && (top < best_top || (top == best_top && s.y < best.y)))
+          best = s, best_turn = r, best_top = top, best_shape = std::move(shape);
       }
-      if (!fits) continue;
-      pages[p] = std::move(trial);
-      for (size_t k = 0; k < order.size(); ++k) result.placements[order[k]] = placed[k];
-      break;
+      if (best.x < 0) return false;
+      settle(trial, best_shape, best);
+      placed[k] = {page_index, best.x, best.y, scale, best_turn};
+    }
+    page = std::move(trial);
+    for (size_t k = 0; k < order.size(); ++k) result.placements[order[k]] = placed[k];
+    return true;
+  };
+  auto largest_first = [&](std::vector<size_t>& order) {
+    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+      float sa = mesh_scale[charts[a].mesh], sb = mesh_scale[charts[b].mesh];
+      return charts[a].extent.x * charts[a].extent.y * sa * sa > charts[b].extent.x * charts[b].extent.y * sb * sb;
+    });
+  };
+
+  // Everything on one page if it fits: then meshes need not go one after another, and all
+  // charts are packed largest first together, which packs tighter.
+  std::vector<size_t> all(charts.size());
+  std::iota(all.begin(), all.end(), 0);
+  largest_first(all);
+  std::vector<Page> pages(1, Page{page_size, std::vector<int>(size_t(page_size), 0), 0, 0});
+  if (charts.empty() || !place_on(pages[0], 0, all)) {
+    pages.clear();
+    for (size_t m : mesh_order) {
+      if (charts_of_mesh[m].empty()) continue;
+      std::vector<size_t> order = charts_of_mesh[m];
+      largest_first(order);
+      bool placed = false;
+      for (size_t p = 0; p < pages.size() && !placed; ++p) placed = place_on(pages[p], int(p), order);
+      // Not even an empty page holds the mesh at this scale: it shrinks until one does.
+      for (bool shrunk = false; !placed; shrunk = true) {
+        Page empty{page_size, std::vector<int>(size_t(page_size), 0), 0, 0};
+        if (place_on(empty, int(pages.size()), order)) {
+          pages.push_back(std::move(empty));
+          placed = true;
+        } else {
+          mesh_scale[m] *= 0.9f;
+        }
+        if (shrunk && (result.downscaled_meshes.empty() || result.downscaled_meshes.back() != m))
+          result.downscaled_meshes.push_back(uint32_t(m));
+      }
     }
   }
   for (size_t c = 0; c < charts.size(); ++c) result.placements[c].scale = mesh_scale[charts[c].mesh];

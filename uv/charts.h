@@ -22,10 +22,14 @@ struct ChartOptions {
   float max_normal_deviation_degrees = 50;  // a chart's faces stay within this cone of its normal
   float hard_edge_degrees = 40;             // edges folding more than this are always seams
   float small_chart_area = 0;               // m^2; charts smaller than this merge into a neighbour
+  // A curved chart holds at most this share of its mesh's area, so no chart wraps round a shape
+  // (the top of a torus is a ring of normals all within any cone); flat charts are not capped.
+  float max_curved_chart_fraction = 1.0f / 12;
 };
 
-// Groups faces into charts: region growing from the largest faces over edges that are not hard,
-// keeping each chart's normals in a cone, then folding tiny charts into a neighbour. Returns the
+// Groups faces into charts: seeds grown all at once over edges that are not hard, keeping each
+// chart's normals in a cone, with the seeds moved to their charts' middles a few times (Lloyd
+// relaxation, as xatlas does) so charts come out round; then tiny charts fold into a neighbour. Returns the
 // chart of each OpenMesh face (-1 for none) and sets chart_count.
 std::vector<int> grow_charts(const HalfEdgeMesh& mesh, const ChartOptions& options, int* chart_count);
 

@@ -186,6 +186,51 @@ TEST(Cli, InterruptCancelsAndLeavesNothing) {
   EXPECT_EQ(leftovers(parent), 0u);
 }
 
+TEST(Cli, UvPrintsTheAtlasStatistics) {
+  Outcome r = radbake("uv " + test::source_path("samples/cornell_box/cornell_box.gltf") + " --stats");
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const char* line : {"utilisation", "L2 stretch", "seam length", "overlapping texels  0", "flipped triangles   0",
+                           "padding violations  0"})
+    EXPECT_NE(r.out.find(line), std::string::npos) << line << "\n" << r.out;
+
+  Outcome j = radbake("uv " + fixture("uv/uv_sphere.gltf") + " --json --max-page-size 512 --padding 3");
+  ASSERT_EQ(j.status, 0) << j.err;
+  nlohmann::json s = nlohmann::json::parse(j.out);
+  EXPECT_EQ(s["overlapping_texels"], 0);
+  EXPECT_EQ(s["flipped_triangles"], 0);
+  EXPECT_EQ(s["padding_violations"], 0);
+  EXPECT_EQ(s["padding"], 3);
+  EXPECT_GT(s["utilisation"].get<double>(), 0.3);
+  EXPECT_LT(s["stretch_l2"].get<double>(), 1.05);
+}
+
+TEST(Cli, UvEvaluatesALayoutMadeElsewhere) {
+  // Six walls each filling their own [0, 1] square: measured as one page, they overlap.
+  Outcome r = radbake("uv " + fixture("own_lightmap_uvs.gltf") + " --evaluate-texcoord 1 --max-page-size 128 --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  nlohmann::json s = nlohmann::json::parse(r.out);
+  EXPECT_EQ(s["charts"], 6);
+  EXPECT_GT(s["overlapping_texels"].get<int>(), 5000);
+  Outcome missing = radbake("uv " + fixture("own_lightmap_uvs.gltf") + " --evaluate-texcoord 3");
+  EXPECT_EQ(missing.status, 2);
+  EXPECT_NE(missing.err.find("has no TEXCOORD_3"), std::string::npos);
+}
+
+TEST(Cli, DensityIsLoweredToFitOnePageOnlyWhenAsked) {
+  std::string cornell = test::source_path("samples/cornell_box/cornell_box.gltf");
+  nlohmann::json pages = nlohmann::json::parse(radbake("uv " + cornell + " --density 400 --max-page-size 256 --json").out);
+  EXPECT_GT(pages["pages"].get<int>(), 1);  // more pages, same texel size
+  EXPECT_FLOAT_EQ(pages["texel_density_per_m"].get<float>(), 400.0f);
+  EXPECT_FALSE(pages["density_lowered"].get<bool>());
+  Outcome fitted = radbake("uv " + cornell + " --density 400 --max-page-size 256 --fit-page --json");
+  nlohmann::json one = nlohmann::json::parse(fitted.out);
+  EXPECT_EQ(one["pages"], 1);
+  EXPECT_LT(one["texel_density_per_m"].get<float>(), 400.0f);
+  EXPECT_TRUE(one["density_lowered"].get<bool>());
+  ASSERT_EQ(one["warnings"].size(), 1u);  // and it says so
+  EXPECT_NE(one["warnings"][0].get<std::string>().find("lowered from 400"), std::string::npos);
+}
+
 // The README's example commands run as written (with out/ moved to a temporary folder).
 TEST(Cli, ReadmeExamplesRun) {
   std::stringstream readme(slurp(test::source_path("README.md")));

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -59,6 +60,23 @@ void add_box(Scene& scene, Vec3 lo, Vec3 hi, bool inward, int material, const st
 }
 
 Atlas unwrap(const Scene& scene, const AtlasOptions& options) { return ensure_lightmap_uvs(mesh_views(scene), options); }
+
+MeshInstance bumpy_torus(int rings, int segments) {
+  MeshInstance inst;
+  inst.name = "bumpy torus";
+  for (int i = 0; i < rings; ++i)
+    for (int j = 0; j < segments; ++j) {
+      float u = 2 * float(M_PI) * i / rings, v = 2 * float(M_PI) * j / segments;
+      float r = 0.35f + 0.03f * std::sin(7 * u) * std::sin(5 * v);
+      inst.positions.push_back({(1 + r * std::cos(v)) * std::cos(u), r * std::sin(v), (1 + r * std::cos(v)) * std::sin(u)});
+    }
+  auto at = [&](int i, int j) { return uint32_t((i % rings) * segments + (j % segments)); };
+  for (int i = 0; i < rings; ++i)
+    for (int j = 0; j < segments; ++j)
+      inst.triangles.insert(inst.triangles.end(),
+                            {at(i, j), at(i, j + 1), at(i + 1, j + 1), at(i, j), at(i + 1, j + 1), at(i + 1, j)});
+  return inst;
+}
 
 Baked bake_scene(const Scene& scene, const AtlasOptions& atlas_options, const BakeOptions& options) {
   Baked b;

@@ -24,6 +24,10 @@ void add_box(Scene& scene, Vec3 lo, Vec3 hi, bool inward, int material, const st
 
 Atlas unwrap(const Scene& scene, const AtlasOptions& options);
 
+// A dense curved surface: a torus (major radius 1 m) with bumps, `rings` x `segments` quads
+// split into triangles. 250 x 200 gives 100,000 triangles.
+MeshInstance bumpy_torus(int rings, int segments);
+
 struct Baked {
   Atlas atlas;
   BakeResult result;
