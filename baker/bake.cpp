@@ -59,7 +59,7 @@ BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& optio
 
   Surface surface = clock.run("surface", [&] { return build_surface(scene, atlas); });
   auto tracer = clock.run("ray tracer", [&] { return std::make_unique<RayTracer>(surface); });
-  MaterialSampler materials(scene, surface);
+  MaterialSampler materials(scene, surface, options.emission_scale);
   Elements elements = clock.run("elements", [&] { return build_elements(surface, materials, options.elements, progress); });
   clock.run("sample placement", [&] {
     place_samples(elements, surface, *tracer, options.seed, progress);

@@ -34,6 +34,7 @@ struct BakeOptions {
   uint64_t seed = 1;            // same seed, same input: bit-identical output, whatever the thread count
   int threads = 0;              // 0: all cores
   StoredQuantity store = StoredQuantity::Irradiance;
+  float emission_scale = 1;     // multiplies glTF emission before it is read as cd/m2 (see README)
   bool keep_direct = false;     // keep BakeResult::direct (for debug dumps); costs 12 bytes per texel
 };
 

@@ -38,7 +38,8 @@ Vec2 apply_transform(const TextureTransform& t, Vec2 uv) {
 
 }  // namespace
 
-MaterialSampler::MaterialSampler(const Scene& scene, const Surface& surface) : scene_(scene), surface_(surface) {
+MaterialSampler::MaterialSampler(const Scene& scene, const Surface& surface, float emission_scale)
+    : scene_(scene), surface_(surface), emission_scale_(emission_scale) {
   for (const Material& m : scene.materials) {
     base_texture_.push_back(m.base_color_texture.present() ? texture_for(m.base_color_texture.image, Decode::Srgb) : -1);
     metallic_texture_.push_back(
@@ -142,7 +143,7 @@ Rgb MaterialSampler::emission(uint32_t triangle, Vec2 bary, float spacing) const
   int mi = surface_.material[triangle];
   const Material& m = material_of(scene_, mi);
   if (!m.emits()) return {0, 0, 0};
-  Rgb e = m.emissive * (m.emissive_strength * kExitancePerEmissiveUnit);
+  Rgb e = m.emissive * (m.emissive_strength * emission_scale_ * kExitancePerEmissiveUnit);
   if (mi >= 0 && emissive_texture_[size_t(mi)] >= 0)
     e = e * sample(m.emissive_texture, emissive_texture_[size_t(mi)], triangle, bary, spacing);
   return e;

@@ -23,7 +23,8 @@ constexpr float kMaxReflectance = 0.999f;
 
 class MaterialSampler {
  public:
-  MaterialSampler(const Scene& scene, const Surface& surface);
+  // `emission_scale` multiplies every material's emission (a unit conversion for the source).
+  MaterialSampler(const Scene& scene, const Surface& surface, float emission_scale = 1);
 
   // `spacing` is the distance, in lightmap texels, between neighbouring samples of the caller; it
   // chooses the texture mip level so that each sample averages its share of the footprint.
@@ -50,6 +51,7 @@ class MaterialSampler {
 
   const Scene& scene_;
   const Surface& surface_;
+  float emission_scale_;
   std::vector<Texture> textures_;
   std::map<std::pair<int, Decode>, int> texture_of_image_;  // (image, decoding) -> textures_
   // Per material: index into textures_ for base colour, metallic, emission (-1 when absent).

@@ -70,6 +70,8 @@ bake options:
   --light-rays N          shadow rays per texel per punctual light (default 4)
   --patch-size N          patch side in texels, 0 = auto (default 0)
   --png-scale X|auto      value (lux or lm/m2) that the PNG encodes as white (default auto)
+  --emission-scale X      multiply glTF emission before reading it as cd/m2 (default 1; 683 for
+                          Blender's exporter, which converts lamps to candela but not emission)
   --no-ambient            leave out the ambient estimate of the light still unshot
   --debug-dumps           also write OUTDIR/debug/*.exr: light by source, material, normals,
                           sample flags and patch layout, undilated
@@ -198,6 +200,7 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
       {"--area-light-rays", [&](const std::string& v) { b.bake.direct.area_light_rays = int(parse_integer("--area-light-rays", v, 1, 1 << 16)); }},
       {"--light-rays", [&](const std::string& v) { b.bake.direct.punctual_rays = int(parse_integer("--light-rays", v, 1, 1 << 16)); }},
       {"--patch-size", [&](const std::string& v) { b.bake.patches.block_size = int(parse_integer("--patch-size", v, 0, 16384)); }},
+      {"--emission-scale", [&](const std::string& v) { b.bake.emission_scale = float(parse_number("--emission-scale", v, 0, 1e9)); }},
       {"--png-scale", [&](const std::string& v) { b.png_scale = v == "auto" ? 0.0f : float(parse_number("--png-scale", v, 1e-30, 1e30)); }},
   };
   std::map<std::string, Flag> flags = {
@@ -241,6 +244,7 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
       {"light-rays", number(b.bake.direct.punctual_rays)},
       {"patch-size", b.bake.patches.block_size > 0 ? number(b.bake.patches.block_size) : "auto"},
       {"png-scale", b.png_scale > 0 ? number(b.png_scale) : "auto"},
+      {"emission-scale", number(b.bake.emission_scale)},
       {"ambient", b.bake.solve.ambient_term ? "yes" : "no"},
       {"rotate-charts", b.atlas.rotate_charts ? "yes" : "no"},
       {"fit-page", b.atlas.fit_one_page ? "yes" : "no"},

@@ -30,7 +30,13 @@ void write_image(const std::string& path, int width, int height, const OIIO::Typ
 
 void write_exr(const std::string& path, const LightmapPage& page) {
   static_assert(sizeof(Rgb) == 3 * sizeof(float), "texels are packed float RGB");
-  write_image(path, page.width, page.height, OIIO::TypeDesc::HALF, page.texels.data(), OIIO::TypeDesc::FLOAT, true);
+  // Half floats end at 65504: fine for interiors, but daylight reaches 100000 lux, so a page with
+  // brighter texels is written in full float rather than clipped to infinity.
+  constexpr float kLargestHalf = 65504.0f;
+  bool fits_half = std::all_of(page.texels.begin(), page.texels.end(),
+                               [&](const Rgb& t) { return max_component(t) <= kLargestHalf; });
+  write_image(path, page.width, page.height, fits_half ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT,
+              page.texels.data(), OIIO::TypeDesc::FLOAT, true);
 }
 
 float automatic_png_scale(const std::vector<LightmapPage>& pages) {

@@ -1,5 +1,6 @@
-// Lightmap pages as files: linear half-float OpenEXR (the values themselves) and 8-bit PNG
-// (sRGB-encoded value / scale, for viewers and engines that take ordinary images).
+// Lightmap pages as files: linear OpenEXR (the values themselves; half float when they fit, else
+// full float) and 8-bit PNG (sRGB-encoded value / scale, for viewers and engines that take
+// ordinary images).
 #pragma once
 
 #include <string>
@@ -18,7 +19,7 @@ LightmapFiles write_lightmaps(const std::vector<LightmapPage>& pages, const std:
                               const std::string& name, const std::string& quantity, const std::string& unit,
                               float png_scale);
 
-// One page as linear half-float EXR.
+// One page as linear EXR: half float when every texel fits (up to 65504), full float otherwise.
 void write_exr(const std::string& path, const LightmapPage& page);
 
 // Reads an EXR page back (RGB, linear); for tests and `radbake` tools. Throws on failure.

@@ -26,14 +26,19 @@ double point_to_rectangle(double px, double pz, double x0, double x1, double z0,
   return f;
 }
 
-TEST(AreaLight, EmittingSquareGivesPiTimesLuminanceTimesFormFactor) {
+// A 1 m square lamp 1 m above a black floor whose glTF emission, times `emission_scale`, is a
+// luminance of 1000 cd/m2: the floor's irradiance against the closed form.
+void expect_closed_form_under_square_lamp(float emission_in_file, float emission_scale) {
+  const float luminance = emission_in_file * emission_scale;  // cd/m2
+  ASSERT_FLOAT_EQ(luminance, 1000.0f);
   Scene scene;
   int black = test::add_material(scene, {0, 0, 0});
-  const float luminance = 1000;  // cd/m2
-  int lamp = test::add_material(scene, {0, 0, 0}, {1, 1, 1}, luminance);
+  int lamp = test::add_material(scene, {0, 0, 0}, {1, 1, 1}, emission_in_file);
   test::add_quad(scene, {-3, 0, 3}, {6, 0, 0}, {0, 0, -6}, black);              // floor, faces +y
   test::add_quad(scene, {-0.5f, 1, -0.5f}, {1, 0, 0}, {0, 0, 1}, lamp);         // 1 m square at 1 m, faces -y
-  test::Baked b = test::bake_scene(scene, {32.0f, 512, 2}, {});
+  BakeOptions options;
+  options.emission_scale = emission_scale;
+  test::Baked b = test::bake_scene(scene, {32.0f, 512, 2}, options);
   const Elements& e = b.result.elements;
   size_t checked = 0;
   for (size_t i = 0; i < e.size(); ++i) {
@@ -46,6 +51,13 @@ TEST(AreaLight, EmittingSquareGivesPiTimesLuminanceTimesFormFactor) {
     ++checked;
   }
   EXPECT_GT(checked, 200u);
+}
+
+TEST(AreaLight, EmittingSquareGivesPiTimesLuminanceTimesFormFactor) { expect_closed_form_under_square_lamp(1000, 1); }
+
+// What the Blender add-on relies on: Blender's emission strength 1000/683 with --emission-scale 683.
+TEST(AreaLight, EmissionScaleConvertsTheFilesUnitToLuminance) {
+  expect_closed_form_under_square_lamp(1000.0f / 683.0f, 683.0f);
 }
 
 }  // namespace

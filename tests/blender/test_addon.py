@@ -1,0 +1,237 @@
+"""The Blender add-on in real, headless Blender, installed from its zip as a user would.
+
+  blender -b --factory-startup --python-exit-code 1 --python tests/blender/test_addon.py -- \
+      ADDON.zip RADBAKE_BINARY SOURCE_DIR CASE
+
+CASE is one of the test functions below (ctest runs each as its own test). Any failed assertion
+ends Blender with exit status 1.
+"""
+import math
+import os
+import sys
+import tempfile
+
+import bpy
+
+ADDON_ZIP, RADBAKE, SOURCE, CASE = sys.argv[sys.argv.index("--") + 1:]
+
+
+def install_addon():
+    bpy.ops.preferences.addon_install(filepath=ADDON_ZIP, overwrite=True)
+    bpy.ops.preferences.addon_enable(module="radbake")
+    bpy.context.preferences.addons["radbake"].preferences.executable = RADBAKE
+
+
+def cornell_box():
+    """The Cornell box, built in Blender from the sample through Blender's own glTF importer."""
+    bpy.ops.wm.read_factory_settings(use_empty=True)
+    install_addon()
+    bpy.ops.import_scene.gltf(filepath=os.path.join(SOURCE, "samples/cornell_box/cornell_box.gltf"))
+    scene = bpy.context.scene
+    scene.radbake.max_page_size = 256
+    scene.radbake.quality = 'DRAFT'
+    return scene
+
+
+def snapshot():
+    """What a bake may change, so a test can tell whether the scene is as it was."""
+    objects = {}
+    for o in bpy.data.objects:
+        if o.type != 'MESH':
+            continue
+        objects[o.name] = (o.data.name, tuple(s.material.name if s.material else "" for s in o.material_slots),
+                           tuple(l.name for l in o.data.uv_layers), tuple(a.name for a in o.data.color_attributes))
+    return objects, sorted(m.name for m in bpy.data.materials), sorted(i.name for i in bpy.data.images), \
+        sorted(m.name for m in bpy.data.meshes)
+
+
+def bake():
+    """The operator's result; in background mode an error report comes back as a RuntimeError."""
+    try:
+        return bpy.ops.radbake.bake()
+    except RuntimeError as e:
+        print("reported:", e)
+        return {'CANCELLED'}
+
+
+def corner_colours(obj, facing):
+    """Mean baked colour of the object's face corners whose face normal points along `facing`."""
+    attr = obj.data.color_attributes["radbake_lux"]
+    total, count = [0.0, 0.0, 0.0], 0
+    for poly in obj.data.polygons:
+        n = poly.normal
+        if n.x * facing[0] + n.y * facing[1] + n.z * facing[2] < 0.7:
+            continue
+        for i in poly.loop_indices:
+            c = attr.data[i].color
+            total = [total[k] + c[k] for k in range(3)]
+            count += 1
+    assert count > 0, "no faces of %s face %s" % (obj.name, facing)
+    return [t / count for t in total]
+
+
+def test_cornell_box_bakes_onto_the_original_objects():
+    scene = cornell_box()
+    before = snapshot()
+    assert bake() == {'FINISHED'}
+    objects, materials, images, meshes = snapshot()
+    assert set(objects) == set(before[0]), "objects added or lost"
+    assert meshes == before[3], "meshes were duplicated"
+    pages = [i for i in bpy.data.images if i.get("radbake")]
+    assert pages, "no lightmap images"
+    for image in pages:
+        pixels = list(image.pixels)
+        assert all(math.isfinite(p) for p in pixels), "non-finite lightmap texels"
+        assert max(pixels) > 0, "black lightmap"
+    for name, (_, slots, uv_layers, colours) in objects.items():
+        assert "radbake_lightmap" in uv_layers and "radbake_lux" in colours, name
+        assert all(bpy.data.materials[s].get("radbake") for s in slots), (name, slots)
+    # Colour bleeding: the short block's face toward the red wall (+x) is redder than the one
+    # toward the green wall (-x).
+    block = bpy.data.objects["short_block"]
+    red_side, green_side = corner_colours(block, (1, 0, 0)), corner_colours(block, (-1, 0, 0))
+    print("red side", red_side, "green side", green_side)
+    assert red_side[0] / red_side[1] > 1.2 * green_side[0] / green_side[1], (red_side, green_side)
+
+    # The materials show the lightmap: a tiny Cycles render from the sample's camera is lit and
+    # redder on the left (the red wall) than on the right.
+    scene.camera = bpy.data.objects["camera"]
+    scene.render.engine = 'CYCLES'
+    scene.cycles.device = 'CPU'
+    scene.cycles.samples = 4
+    scene.cycles.use_denoising = False  # Debian's Blender has no OpenImageDenoise
+    scene.render.resolution_x = scene.render.resolution_y = 32
+    scene.render.filepath = os.path.join(tempfile.mkdtemp(), "render.png")
+    bpy.ops.render.render(write_still=True)
+    image = bpy.data.images.load(scene.render.filepath)
+    px = list(image.pixels)
+    w = image.size[0]
+
+    def mean(x0, x1):
+        values = [px[4 * (y * w + x) + c] for y in range(8, 24) for x in range(x0, x1) for c in range(3)]
+        r = [px[4 * (y * w + x)] for y in range(8, 24) for x in range(x0, x1)]
+        g = [px[4 * (y * w + x) + 1] for y in range(8, 24) for x in range(x0, x1)]
+        return sum(values) / len(values), sum(r) / len(r), sum(g) / len(g)
+
+    left, right = mean(0, 4), mean(28, 32)
+    print("render left", left, "right", right)
+    assert left[0] > 0.02 and right[0] > 0.02, "the render is black"
+    assert left[1] / max(left[2], 1e-6) > right[1] / max(right[2], 1e-6), "the red wall is not on the left"
+
+
+def test_baking_twice_replaces_and_remove_restores():
+    cornell_box()
+    before = snapshot()
+    assert bake() == {'FINISHED'}
+    once = snapshot()
+    assert bake() == {'FINISHED'}
+    twice = snapshot()
+    assert once == twice, "a second bake piled things up"
+    assert bpy.ops.radbake.remove() == {'FINISHED'}
+    assert snapshot() == before, "remove did not restore the scene"
+
+
+def test_a_failing_bake_changes_nothing():
+    cornell_box()
+    before = snapshot()
+    prefs = bpy.context.preferences.addons["radbake"].preferences
+    prefs.executable = "/nonexistent/radbake"
+    assert bake() == {'CANCELLED'}
+    assert snapshot() == before
+    from radbake.runner import BakeError, find_executable
+    try:
+        find_executable(bpy.context)
+        raise AssertionError("a missing executable was accepted")
+    except BakeError as e:
+        assert "not found" in str(e), str(e)
+    prefs.executable = RADBAKE
+
+    # Nothing emits light: radbake's own reason comes back, the scene stays as it was.
+    bpy.ops.wm.read_factory_settings(use_empty=True)
+    install_addon()
+    bpy.ops.mesh.primitive_cube_add()
+    before = snapshot()
+    from radbake import runner
+    bake_job = runner.Bake(bpy.context)
+    bake_job.export(bpy.context)
+    bake_job.start(bpy.context.scene.radbake)
+    bake_job.wait()
+    try:
+        bake_job.check()
+        raise AssertionError("a bake without light succeeded")
+    except BakeError as e:
+        assert "nothing in the scene emits light" in str(e), str(e)
+    finally:
+        bake_job.cleanup()
+    assert bake() == {'CANCELLED'}
+    assert snapshot() == before
+
+    # Selection scope with nothing selected.
+    bpy.context.scene.radbake.scope = 'SELECTION'
+    bpy.ops.object.select_all(action='DESELECT')
+    bpy.ops.object.light_add(type='POINT', location=(0, 0, 3))
+    bpy.ops.object.select_all(action='DESELECT')
+    before = snapshot()
+    assert bake() == {'CANCELLED'}
+    assert snapshot() == before
+
+
+def test_cancel_ends_radbake_and_leaves_nothing_behind():
+    """What Esc does in the modal bake: progress has arrived, then the process ends, its temporary
+    folder goes and the scene is as it was."""
+    import time
+    from radbake import runner
+    scene = cornell_box()
+    scene.radbake.quality = 'PRODUCTION'
+    scene.radbake.max_page_size = 1024
+    before = snapshot()
+    job = runner.Bake(bpy.context)
+    job.export(bpy.context)
+    job.start(scene.radbake)
+    deadline = time.monotonic() + 120
+    while job.fraction == 0 and time.monotonic() < deadline:
+        assert not job.poll(), "radbake finished before it could be cancelled"
+        time.sleep(0.05)
+    print("cancelled at", job.stage, job.fraction)
+    assert job.fraction > 0, "no progress from radbake"
+    job.cleanup()
+    assert job.process.poll() is not None, "radbake still running"
+    assert not os.path.exists(job.folder), "temporary files left"
+    assert snapshot() == before
+
+
+def test_point_light_power_gives_the_documented_illuminance():
+    """README: Blender's exporter turns a point light of P watts into P * 683 / (4 pi) candela, so a
+    surface d metres below it, facing it, reads P * 683 / (4 pi d^2) lux."""
+    bpy.ops.wm.read_factory_settings(use_empty=True)
+    install_addon()
+    bpy.ops.mesh.primitive_grid_add(x_subdivisions=10, y_subdivisions=10, size=2)
+    plane = bpy.context.active_object
+    black = bpy.data.materials.new("black")
+    black.use_nodes = True
+    black.node_tree.nodes["Principled BSDF"].inputs["Base Color"].default_value = (0, 0, 0, 1)
+    plane.data.materials.append(black)
+    bpy.ops.object.light_add(type='POINT', location=(0, 0, 1))
+    light = bpy.context.active_object
+    light.data.energy = 100.0
+    light.data.shadow_soft_size = 0
+    scene = bpy.context.scene
+    scene.radbake.texel_density = 64
+    scene.radbake.bring_back = 'COLORS'
+    assert bake() == {'FINISHED'}
+    attr = plane.data.color_attributes["radbake_lux"]
+    # The vertex nearest the centre, at distance r from the foot of the light: E = I cos(theta) / d^2.
+    vertices = plane.data.vertices
+    nearest = min(range(len(vertices)), key=lambda v: vertices[v].co.length)
+    corners = [i for i, loop in enumerate(plane.data.loops) if loop.vertex_index == nearest]
+    measured = sum(attr.data[i].color[0] for i in corners) / len(corners)
+    r = vertices[nearest].co.length
+    assert r < 0.15, r
+    expected = 100.0 * 683 / (4 * math.pi) / (1.0 + r * r) ** 1.5
+    print("centre illuminance", measured, "lux, expected", expected)
+    assert abs(measured / expected - 1) < 0.02, (measured, expected)  # 2%: the vertex fit over 1/64 m texels
+
+
+if __name__ == "__main__":
+    globals()[CASE]()
+    print("PASSED", CASE)
