@@ -131,6 +131,25 @@ def test_baking_twice_replaces_and_remove_restores():
     assert snapshot() == before, "remove did not restore the scene"
 
 
+def test_selection_scope_bakes_only_the_selected_objects():
+    """The whole scene still lights the selection, but only the selection receives the bake."""
+    scene = cornell_box()
+    scene.radbake.scope = 'SELECTION'
+    bpy.ops.object.select_all(action='DESELECT')
+    bpy.data.objects["short_block"].select_set(True)
+    objects_before = snapshot()[0]
+    assert bake() == {'FINISHED'}
+    objects_after = snapshot()[0]
+    for name, state in objects_after.items():
+        if name == "short_block":
+            assert "radbake_lightmap" in state[2] and "radbake_lux" in state[3], state
+        else:
+            assert state == objects_before[name], (name, state)
+    # Lit by the rest of the scene: the face toward the red wall sees red light.
+    red_side = corner_colours(bpy.data.objects["short_block"], (1, 0, 0))
+    assert red_side[0] > red_side[1] > 0, red_side
+
+
 def test_a_failing_bake_changes_nothing():
     cornell_box()
     before = snapshot()
