@@ -3,6 +3,7 @@
 #include <malloc.h>
 #include <tbb/global_control.h>
 
+#include <algorithm>
 #include <chrono>
 #include <memory>
 #include <thread>
@@ -42,10 +43,18 @@ bool anything_emits(const Scene& scene) {
   return false;
 }
 
+// Radiosity from irradiance: emission plus reflected light, lm/m2.
+std::vector<Rgb> radiosity_of(const Elements& elements, const std::vector<Rgb>& irradiance) {
+  std::vector<Rgb> radiosity(irradiance.size());
+  for (size_t i = 0; i < radiosity.size(); ++i)
+    radiosity[i] = elements.emission[i] + elements.reflectance[i] * irradiance[i];
+  return radiosity;
+}
+
 }  // namespace
 
 BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& options,
-                const ProgressCallback& on_progress) {
+                const ProgressCallback& on_progress, const PreviewCallback& on_preview) {
   if (!anything_emits(scene))
     throw InputError("nothing in the scene emits light: no KHR_lights_punctual light and no emissive material");
   std::unique_ptr<tbb::global_control> thread_limit;
@@ -65,8 +74,7 @@ BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& optio
     place_samples(elements, surface, *tracer, options.seed, progress);
     return 0;
   });
-  Patches patches = clock.run("patches", [&] { return build_patches(elements, surface, options.patches); });
-  if (patches.members.empty())
+  if (std::none_of(elements.flags.begin(), elements.flags.end(), [](uint8_t f) { return !(f & kBuried); }))
     throw InputError("no lightmap texel covers a visible surface: raise the texel density or the page size");
 
   std::vector<Rgb> punctual = clock.run("punctual lights", [&] {
@@ -82,24 +90,32 @@ BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& optio
   }
   punctual = {};
 
-  std::vector<Rgb> patch_direct(patches.size());
-  std::vector<double> first_bounce_power(patches.size());
-  for (size_t p = 0; p < patches.size(); ++p) {
-    Rgb total{};
-    for (uint32_t k = patches.first_member[p]; k < patches.first_member[p + 1]; ++k) {
-      uint32_t i = patches.members[k];
-      total += result.direct[i] * elements.area[i];
-    }
-    patch_direct[p] = patches.area[p] > 0 ? total / patches.area[p] : Rgb{};
-    Rgb leaving = patches.emission[p] + patches.reflectance[p] * patch_direct[p];
-    first_bounce_power[p] = double(sum(leaving)) * patches.area[p];
+  InterreflectionObserver observer;
+  if (on_preview && options.preview_every > 0) {
+    observer.every = options.preview_every;
+    observer.see = [&](const Patches& patches, const PatchTransport& transport, const std::vector<Rgb>& exitance,
+                       size_t iteration) {
+      std::vector<Rgb> gathered = gathered_irradiance(patches, transport, exitance);
+      std::vector<Rgb> estimate = result.direct;
+      for (size_t i = 0; i < estimate.size(); ++i)
+        if (patches.patch_of_element[i] != UINT32_MAX) estimate[i] += gathered[patches.patch_of_element[i]];
+      if (options.store == StoredQuantity::Radiosity) estimate = radiosity_of(elements, estimate);
+      on_preview(compose_pages(elements, estimate, surface.pages), iteration);
+    };
   }
-  PatchTransport transport = clock.run("form factors", [&] {
-    return trace_patch_transport(elements, patches, surface, *tracer, options.patch_rays, first_bounce_power,
-                                 options.seed, progress);
-  });
-  RadiositySolution solution =
-      clock.run("radiosity", [&] { return solve_radiosity(patches, transport, patch_direct, options.solve, progress); });
+  auto started = std::chrono::steady_clock::now();
+  Interreflection light_between = solve_interreflection(elements, surface, *tracer, result.direct, options.patches,
+                                                        options.form_factors, options.subdivision, options.solve,
+                                                        options.seed, progress, observer);
+  const double interreflection_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  report.stage_times.push_back({"form factors", light_between.form_factor_seconds});
+  report.stage_times.push_back(
+      {"radiosity", interreflection_seconds - light_between.form_factor_seconds});
+  malloc_trim(0);
+  const Patches& patches = light_between.patches;
+  PatchTransport& transport = light_between.transport;
+  const RadiositySolution& solution = light_between.solution;
   GatherStats gather_stats;
   result.irradiance = clock.run("final gather", [&] {
     return gather_indirect(elements, patches, surface, *tracer, solution.exitance, options.gather_rays, options.seed,
@@ -112,10 +128,7 @@ BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& optio
   transport = {};  // the largest patch-level structure; nothing after this needs it
   if (!options.keep_direct) result.direct = {};
   std::vector<Rgb> radiosity;
-  if (options.store == StoredQuantity::Radiosity) {
-    radiosity.resize(n);
-    for (size_t i = 0; i < n; ++i) radiosity[i] = elements.emission[i] + elements.reflectance[i] * result.irradiance[i];
-  }
+  if (options.store == StoredQuantity::Radiosity) radiosity = radiosity_of(elements, result.irradiance);
   const std::vector<Rgb>& stored = radiosity.empty() ? result.irradiance : radiosity;
   result.pages = clock.run("dilation", [&] { return compose_pages(elements, stored, surface.pages); });
   result.vertex_values =
@@ -130,6 +143,7 @@ BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& optio
   }
   report.patches = patches.size();
   report.patch_block_size = patches.block_size;
+  report.subdivision_rounds = light_between.rounds;
   report.rays = tracer->rays_cast();
   report.solver_iterations = solution.iterations;
   report.unshot_relative = solution.relative_unshot;
@@ -139,7 +153,7 @@ BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& optio
   if (!solution.converged)
     report.warnings.push_back("the radiosity solve stopped at its iteration guard before reaching the tolerance");
   result.elements = std::move(elements);
-  result.patch_of_element = std::move(patches.patch_of_element);
+  result.patch_of_element = std::move(light_between.patches.patch_of_element);
   return result;
 }
 

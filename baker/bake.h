@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -10,6 +11,7 @@
 #include "baker/elements.h"
 #include "baker/energy_balance.h"
 #include "baker/finish.h"
+#include "baker/interreflection.h"
 #include "baker/patches.h"
 #include "baker/progress.h"
 #include "baker/scene.h"
@@ -28,14 +30,16 @@ struct BakeOptions {
   ElementOptions elements;
   PatchOptions patches;
   DirectLightOptions direct;
+  FormFactorOptions form_factors;
+  SubdivisionOptions subdivision;
   SolveOptions solve;
-  uint32_t patch_rays = 2048;   // rays per patch for the form factors
   uint32_t gather_rays = 256;   // hemisphere rays per texel for indirect light
   uint64_t seed = 1;            // same seed, same input: bit-identical output, whatever the thread count
   int threads = 0;              // 0: all cores
   StoredQuantity store = StoredQuantity::Irradiance;
   float emission_scale = 1;     // multiplies glTF emission before it is read as cd/m2 (see README)
   bool keep_direct = false;     // keep BakeResult::direct (for debug dumps); costs 12 bytes per texel
+  size_t preview_every = 0;     // with a preview callback: pages of the estimate every N shots or sweeps
 };
 
 struct StageTime {
@@ -47,6 +51,7 @@ struct BakeReport {
   size_t page_texels = 0, elements = 0, valid_elements = 0, buried_elements = 0, moved_samples = 0;
   size_t patches = 0;
   int patch_block_size = 0;
+  std::vector<SubdivisionRound> subdivision_rounds;
   uint64_t rays = 0;
   std::vector<StageTime> stage_times;
   size_t solver_iterations = 0;
@@ -68,8 +73,12 @@ struct BakeResult {
   BakeReport report;
 };
 
+// The progressive estimate while the radiosity solve refines it: direct light at texel resolution
+// plus the patches' interreflection so far (no final gather), in the stored quantity, dilated.
+using PreviewCallback = std::function<void(const std::vector<LightmapPage>& pages, size_t iteration)>;
+
 // Throws InputError when nothing in the scene emits light, Cancelled when the callback says so.
 BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& options,
-                const ProgressCallback& on_progress = {});
+                const ProgressCallback& on_progress = {}, const PreviewCallback& on_preview = {});
 
 }  // namespace radbake

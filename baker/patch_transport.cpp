@@ -104,22 +104,43 @@ void balance_reciprocity(const Patches& patches, std::vector<std::vector<std::pa
 
 }  // namespace
 
-PatchTransport trace_patch_transport(const Elements& elements, const Patches& patches, const Surface& surface,
-                                     const RayTracer& tracer, uint32_t rays_per_patch,
-                                     const std::vector<double>& power, uint64_t seed, Progress& progress) {
-  const size_t patch_count = patches.size();
-  std::vector<std::vector<std::pair<uint32_t, float>>> rows(patch_count);
+std::vector<uint32_t> all_patches(size_t n) {
+  std::vector<uint32_t> which(n);
+  for (size_t p = 0; p < n; ++p) which[p] = uint32_t(p);
+  return which;
+}
+
+PatchTransport balanced_transport(const Patches& patches, const MeasuredRows& measured) {
   PatchTransport out;
-  out.escaped.assign(patch_count, 0);
-  out.lost.assign(patch_count, 0);
-  out.rays.assign(patch_count, rays_per_patch);
+  out.escaped = measured.escaped;
+  out.lost = measured.lost;
+  out.rays = measured.rays;
+  std::vector<std::vector<std::pair<uint32_t, float>>> rows = measured.rows;
+  balance_reciprocity(patches, rows);
+  out.row_start.assign(patches.size() + 1, 0);
+  for (size_t p = 0; p < patches.size(); ++p) out.row_start[p + 1] = out.row_start[p] + rows[p].size();
+  out.target.reserve(out.row_start.back());
+  out.form_factor.reserve(out.row_start.back());
+  for (auto& row : rows) {
+    for (auto [q, f] : row) {
+      out.target.push_back(q);
+      out.form_factor.push_back(f);
+    }
+    row = {};
+  }
+  return out;
+}
+
+void measure_ray_cast_rows(const Elements& elements, const Patches& patches, const Surface& surface,
+                           const RayTracer& tracer, uint32_t rays_per_patch, const std::vector<double>& power,
+                           const std::vector<uint32_t>& which, uint64_t seed, Progress& progress, MeasuredRows& out) {
+  const size_t patch_count = patches.size();
   double total_power = 0;
   for (double p : power) total_power += p;
-  if (total_power > 0)
-    for (size_t p = 0; p < patch_count; ++p) {
-      double extra = double(rays_per_patch) * double(patch_count) * power[p] / total_power;
-      out.rays[p] = uint32_t(std::min<double>(16.0 * rays_per_patch, rays_per_patch + std::round(extra)));
-    }
+  for (uint32_t p : which) {
+    double extra = total_power > 0 ? double(rays_per_patch) * double(patch_count) * power[p] / total_power : 0;
+    out.rays[p] = uint32_t(std::min<double>(16.0 * rays_per_patch, rays_per_patch + std::round(extra)));
+  }
 
   struct Scratch {
     std::vector<uint32_t> count;
@@ -127,11 +148,12 @@ PatchTransport trace_patch_transport(const Elements& elements, const Patches& pa
     std::vector<double> cumulative_area;
   };
   tbb::enumerable_thread_specific<Scratch> scratch;
-  progress.begin("form factors", patch_count);
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, patch_count, 8), [&](const tbb::blocked_range<size_t>& r) {
+  progress.begin("form factors", which.size());
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, which.size(), 8), [&](const tbb::blocked_range<size_t>& r) {
     Scratch& s = scratch.local();
     if (s.count.size() != patch_count) s.count.assign(patch_count, 0);
-    for (size_t p = r.begin(); p < r.end(); ++p) {
+    for (size_t w = r.begin(); w < r.end(); ++w) {
+      const uint32_t p = which[w];
       const uint32_t* first = &patches.members[patches.first_member[p]];
       const size_t member_count = patches.first_member[p + 1] - patches.first_member[p];
       s.cumulative_area.resize(member_count);
@@ -162,7 +184,8 @@ PatchTransport trace_patch_transport(const Elements& elements, const Patches& pa
         if (s.count[q]++ == 0) s.touched.push_back(q);
       }
       std::sort(s.touched.begin(), s.touched.end());
-      auto& row = rows[p];
+      auto& row = out.rows[p];
+      row.clear();
       row.reserve(s.touched.size());
       for (uint32_t q : s.touched) {
         row.emplace_back(q, float(s.count[q]) / float(rays));
@@ -175,20 +198,16 @@ PatchTransport trace_patch_transport(const Elements& elements, const Patches& pa
     progress.advance(r.size());
   });
   progress.end();
+}
 
-  balance_reciprocity(patches, rows);
-  out.row_start.assign(patch_count + 1, 0);
-  for (size_t p = 0; p < patch_count; ++p) out.row_start[p + 1] = out.row_start[p] + rows[p].size();
-  out.target.reserve(out.row_start.back());
-  out.form_factor.reserve(out.row_start.back());
-  for (auto& row : rows) {
-    for (auto [q, f] : row) {
-      out.target.push_back(q);
-      out.form_factor.push_back(f);
-    }
-    row = {};
-  }
-  return out;
+PatchTransport trace_patch_transport(const Elements& elements, const Patches& patches, const Surface& surface,
+                                     const RayTracer& tracer, uint32_t rays_per_patch,
+                                     const std::vector<double>& power, uint64_t seed, Progress& progress) {
+  MeasuredRows rows;
+  rows.resize(patches.size());
+  measure_ray_cast_rows(elements, patches, surface, tracer, rays_per_patch, power, all_patches(patches.size()), seed,
+                        progress, rows);
+  return balanced_transport(patches, rows);
 }
 
 }  // namespace radbake

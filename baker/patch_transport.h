@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "baker/elements.h"
@@ -24,12 +25,39 @@ struct PatchTransport {
   std::vector<uint32_t> rays;         // per patch
 };
 
-// Every patch casts at least `rays_per_patch` rays; as many again are shared out in proportion to
-// `power` (lm leaving each patch on the first bounce), up to 16 times the base, so the patches
-// that carry the light are measured most finely.
+// Rows F(p -> q) as measured, before reciprocity: what adaptive subdivision keeps between rounds.
+struct MeasuredRows {
+  std::vector<std::vector<std::pair<uint32_t, float>>> rows;  // per patch, by target patch
+  std::vector<float> escaped, lost;
+  std::vector<uint32_t> rays;
+
+  void resize(size_t patches) {
+    rows.resize(patches);
+    escaped.resize(patches);
+    lost.resize(patches);
+    rays.resize(patches);
+  }
+};
+
+// Measures the rows of the patches in `which` into `into` (sized for all patches). Every patch
+// casts at least `rays_per_patch` rays; as many again are shared out in proportion to `power` (lm
+// leaving each patch on the first bounce, over all patches), up to 16 times the base, so the
+// patches that carry the light are measured most finely.
+void measure_ray_cast_rows(const Elements& elements, const Patches& patches, const Surface& surface,
+                           const RayTracer& tracer, uint32_t rays_per_patch, const std::vector<double>& power,
+                           const std::vector<uint32_t>& which, uint64_t seed, Progress& progress, MeasuredRows& into);
+
+// All rows by ray casting, balanced.
 PatchTransport trace_patch_transport(const Elements& elements, const Patches& patches, const Surface& surface,
                                      const RayTracer& tracer, uint32_t rays_per_patch,
                                      const std::vector<double>& power, uint64_t seed, Progress& progress);
+
+// Measured rows made reciprocal (A_p F_pq = A_q F_qp) with every row still summing to what it
+// measured landing, and compressed.
+PatchTransport balanced_transport(const Patches& patches, const MeasuredRows& measured);
+
+// 0, 1, ..., n - 1: every patch.
+std::vector<uint32_t> all_patches(size_t n);
 
 // Where a ray from element `from` in `direction` lands: the patch it struck, or UINT32_MAX
 // with `escaped` telling whether it left the scene (else it struck a back face or buried texel).

@@ -7,18 +7,27 @@ namespace radbake {
 namespace {
 
 struct Keyed {
-  uint64_t key;  // chart, block row, block column
+  uint64_t key;  // wall group (bits 58-63), log2 block side (54-57), chart (32-53), block row, block column
   uint32_t element;
 };
 
-std::vector<Keyed> block_keys(const Elements& e, const Surface& surface, int block) {
+int log2_side(int side) {
+  int k = 0;
+  while ((1 << (k + 1)) <= side) ++k;
+  return k;
+}
+
+// `side_of(i)`: the block side (a power of two) element i is grouped by.
+template <typename SideOf>
+std::vector<Keyed> block_keys(const Elements& e, const Surface& surface, SideOf side_of) {
   std::vector<Keyed> keys;
   keys.reserve(e.size());
   for (size_t i = 0; i < e.size(); ++i) {
     if (!e.valid(i)) continue;
     uint32_t width = uint32_t(surface.pages[e.page[i]].width);
-    uint64_t bx = (e.texel[i] % width) / uint32_t(block), by = (e.texel[i] / width) / uint32_t(block);
-    keys.push_back({uint64_t(surface.chart[e.triangle[i]]) << 32 | by << 16 | bx, uint32_t(i)});
+    int k = log2_side(side_of(i));
+    uint64_t bx = (e.texel[i] % width) >> k, by = (e.texel[i] / width) >> k;
+    keys.push_back({uint64_t(k) << 54 | uint64_t(surface.chart[e.triangle[i]]) << 32 | by << 16 | bx, uint32_t(i)});
   }
   std::sort(keys.begin(), keys.end(), [](const Keyed& a, const Keyed& b) {
     return a.key != b.key ? a.key < b.key : a.element < b.element;
@@ -74,21 +83,8 @@ void split_at_walls(const Elements& e, const Surface& surface, std::vector<Keyed
   });
 }
 
-}  // namespace
-
-Patches build_patches(const Elements& e, const Surface& surface, const PatchOptions& options) {
-  int block = options.block_size > 0 ? options.block_size : 1;
-  std::vector<Keyed> keys = block_keys(e, surface, block);
-  const size_t max_patches =
-      options.max_patches > 0 ? options.max_patches : std::clamp<size_t>(keys.size() / 32, 64, 4096);
-  // Pages are at most 16384 texels, so blocks stay under 2^16 per side in the key.
-  while (options.block_size <= 0 && distinct_keys(keys) > max_patches && block < 16384) {
-    block *= 2;
-    keys = block_keys(e, surface, block);
-  }
-
+Patches patches_from_keys(const Elements& e, const Surface& surface, std::vector<Keyed> keys, int block) {
   split_at_walls(e, surface, keys);
-
   Patches p;
   p.block_size = block;
   p.patch_of_element.assign(e.size(), UINT32_MAX);
@@ -98,6 +94,7 @@ Patches build_patches(const Elements& e, const Surface& surface, const PatchOpti
       p.area.push_back(0);
       p.reflectance.push_back({});
       p.emission.push_back({});
+      p.side.push_back(uint16_t(1u << ((keys[i].key >> 54) & 15)));
     }
     uint32_t el = keys[i].element;
     size_t patch = p.area.size() - 1;
@@ -114,6 +111,31 @@ Patches build_patches(const Elements& e, const Surface& surface, const PatchOpti
     p.emission[q] *= inv;
   }
   return p;
+}
+
+}  // namespace
+
+Patches build_patches(const Elements& e, const Surface& surface, const PatchOptions& options) {
+  int block = options.block_size > 0 ? 1 << log2_side(options.block_size) : 1;
+  auto uniform = [&](size_t) { return block; };
+  std::vector<Keyed> keys = block_keys(e, surface, uniform);
+  const size_t max_patches =
+      options.max_patches > 0 ? options.max_patches : std::clamp<size_t>(keys.size() / 32, 64, 4096);
+  // Pages are at most 16384 texels, so blocks stay under 2^16 per side in the key.
+  while (options.block_size <= 0 && distinct_keys(keys) > max_patches && block < 16384) {
+    block *= 2;
+    keys = block_keys(e, surface, uniform);
+  }
+  return patches_from_keys(e, surface, std::move(keys), block);
+}
+
+Patches split_patches(const Elements& e, const Surface& surface, const Patches& patches,
+                      const std::vector<uint8_t>& split) {
+  auto side_of = [&](size_t i) {
+    uint32_t p = patches.patch_of_element[i];
+    return split[p] && patches.side[p] > 1 ? patches.side[p] / 2 : patches.side[p];
+  };
+  return patches_from_keys(e, surface, block_keys(e, surface, side_of), patches.block_size);
 }
 
 }  // namespace radbake

@@ -29,6 +29,7 @@ enum class Stream : uint64_t {
   Gather,
   Probe,
   Footprint,
+  Hemicube,
 };
 
 // A counter-based generator for one (seed, stream, key) triple.
@@ -133,14 +134,17 @@ inline Vec2 uniform_triangle(Vec2 u) {
 
 namespace radbake {
 
-// A cosine-weighted direction about the shading normal that stays above the geometric surface:
-// directions that dip under it are mirrored back, so interpolated normals cannot send rays into
-// the surface they start from.
-inline Vec3 hemisphere_direction(Vec3 shading_normal, Vec3 geometric_normal, Vec2 u) {
-  Vec3 d = cosine_direction(shading_normal, u);
+// A direction about the shading normal that dips under the geometric surface is mirrored back
+// above it, so interpolated normals cannot send rays into the surface they start from.
+inline Vec3 above_surface(Vec3 d, Vec3 geometric_normal) {
   float below = dot(d, geometric_normal);
   if (below <= 0) d = normalize(d - geometric_normal * (2 * below - 1e-4f));
   return d;
+}
+
+// A cosine-weighted direction about the shading normal that stays above the geometric surface.
+inline Vec3 hemisphere_direction(Vec3 shading_normal, Vec3 geometric_normal, Vec2 u) {
+  return above_surface(cosine_direction(shading_normal, u), geometric_normal);
 }
 
 }  // namespace radbake

@@ -47,8 +47,38 @@ double residual_power(const Patches& patches, const Incoming& in, const std::vec
   return total;
 }
 
+// Cohen et al. 1988: the unshot light, spread evenly and bounced by the mean reflectance.
+Rgb ambient_exitance(const Patches& patches, const std::vector<Rgb>& unshot) {
+  double area = 0;
+  Rgb unshot_power{}, reflected{}, ambient{};
+  for (size_t p = 0; p < patches.size(); ++p) {
+    area += patches.area[p];
+    unshot_power += unshot[p] * patches.area[p];
+    reflected += patches.reflectance[p] * patches.area[p];
+  }
+  if (area <= 0) return ambient;
+  for (int c = 0; c < 3; ++c) {
+    double rho = std::min(double(reflected[c]) / area, 0.999);
+    ambient[c] = float(unshot_power[c] / area / (1.0 - rho));
+  }
+  return ambient;
+}
+
+// Shows the estimate so far to the observer, ambient term included when it is on.
+void show(const Patches& patches, const SolveOptions& options, const SolveObserver& observer,
+          const RadiositySolution& s, const std::vector<Rgb>& unshot) {
+  if (observer.every == 0 || s.iterations % observer.every != 0) return;
+  std::vector<Rgb> estimate = s.exitance;
+  if (options.ambient_term) {
+    Rgb ambient = ambient_exitance(patches, unshot);
+    for (size_t p = 0; p < estimate.size(); ++p) estimate[p] += patches.reflectance[p] * ambient;
+  }
+  observer.see(estimate, s.iterations);
+}
+
 void shoot(const Patches& patches, const PatchTransport& t, const std::vector<Rgb>& direct,
-           const SolveOptions& options, Progress& progress, RadiositySolution& s, std::vector<Rgb>& unshot) {
+           const SolveOptions& options, const SolveObserver& observer, Progress& progress, RadiositySolution& s,
+           std::vector<Rgb>& unshot) {
   const size_t n = patches.size();
   // Max-heap of unshot power with lazy deletion: an entry is stale when its power is outdated.
   using Entry = std::pair<double, uint32_t>;
@@ -82,6 +112,7 @@ void shoot(const Patches& patches, const PatchTransport& t, const std::vector<Rg
       heap.push({power[q], q});
     }
     ++s.iterations;
+    show(patches, options, observer, s, unshot);
     // Now and then: recompute the sum, so floating-point drift stays out of the stopping test,
     // and drop stale heap entries, so the heap stays linear in the patch count.
     if (s.iterations % 4096 == 0 || heap.size() > 8 * n + 1024) {
@@ -101,8 +132,20 @@ void shoot(const Patches& patches, const PatchTransport& t, const std::vector<Rg
   for (double v : power) s.unshot_power += v;
 }
 
+// The residual per patch: the light each would still shoot, which the ambient term spreads.
+void residual_per_patch(const Patches& patches, const Incoming& in, const std::vector<Rgb>& direct,
+                        const std::vector<Rgb>& b, std::vector<Rgb>& unshot) {
+  for (size_t q = 0; q < patches.size(); ++q) {
+    Rgb h = direct[q];
+    for (uint64_t k = in.start[q]; k < in.start[q + 1]; ++k) h += b[in.source[k]] * in.weight[k];
+    Rgb r = patches.reflectance[q] * h - b[q];
+    unshot[q] = {std::max(0.0f, r.x), std::max(0.0f, r.y), std::max(0.0f, r.z)};
+  }
+}
+
 void gather(const Patches& patches, const PatchTransport& t, const std::vector<Rgb>& direct,
-            const SolveOptions& options, Progress& progress, RadiositySolution& s, std::vector<Rgb>& unshot) {
+            const SolveOptions& options, const SolveObserver& observer, Progress& progress, RadiositySolution& s,
+            std::vector<Rgb>& unshot) {
   const size_t n = patches.size();
   Incoming in = transpose(patches, t);
   std::vector<Rgb>& b = s.exitance;
@@ -120,45 +163,33 @@ void gather(const Patches& patches, const PatchTransport& t, const std::vector<R
     if (options.solver == Solver::Jacobi) b.swap(next);
     ++s.iterations;
     s.unshot_power = residual_power(patches, in, direct, b);
+    if (observer.every > 0 && s.iterations % observer.every == 0) {
+      residual_per_patch(patches, in, direct, b, unshot);
+      show(patches, options, observer, s, unshot);
+    }
     progress.advance(0);
   }
-  // The residual per patch is the light each would still shoot: what the ambient term spreads.
-  for (size_t q = 0; q < n; ++q) {
-    Rgb h = direct[q];
-    for (uint64_t k = in.start[q]; k < in.start[q + 1]; ++k) h += b[in.source[k]] * in.weight[k];
-    Rgb r = patches.reflectance[q] * h - b[q];
-    unshot[q] = {std::max(0.0f, r.x), std::max(0.0f, r.y), std::max(0.0f, r.z)};
-  }
+  residual_per_patch(patches, in, direct, b, unshot);
 }
 
 }  // namespace
 
 RadiositySolution solve_radiosity(const Patches& patches, const PatchTransport& transport,
-                                  const std::vector<Rgb>& direct, const SolveOptions& options, Progress& progress) {
+                                  const std::vector<Rgb>& direct, const SolveOptions& options, Progress& progress,
+                                  const SolveObserver& observer) {
   const size_t n = patches.size();
   RadiositySolution s;
   s.exitance.assign(n, Rgb{});
   for (size_t p = 0; p < n; ++p) s.input_power += mean_power(direct[p], patches.area[p]);
   std::vector<Rgb> unshot(n);
   progress.begin("radiosity", 1);
-  if (options.solver == Solver::Shooting) shoot(patches, transport, direct, options, progress, s, unshot);
-  else gather(patches, transport, direct, options, progress, s, unshot);
+  if (options.solver == Solver::Shooting) shoot(patches, transport, direct, options, observer, progress, s, unshot);
+  else gather(patches, transport, direct, options, observer, progress, s, unshot);
   s.relative_unshot = s.input_power > 0 ? s.unshot_power / s.input_power : 0;
   s.converged = s.unshot_power <= options.tolerance * s.input_power;
 
   if (options.ambient_term && n > 0) {
-    // Cohen et al. 1988: the unshot light, spread evenly and bounced by the mean reflectance.
-    double area = 0;
-    Rgb unshot_power{}, reflected{};
-    for (size_t p = 0; p < n; ++p) {
-      area += patches.area[p];
-      unshot_power += unshot[p] * patches.area[p];
-      reflected += patches.reflectance[p] * patches.area[p];
-    }
-    for (int c = 0; c < 3; ++c) {
-      double rho = std::min(double(reflected[c]) / area, 0.999);
-      s.ambient[c] = float(unshot_power[c] / area / (1.0 - rho));
-    }
+    s.ambient = ambient_exitance(patches, unshot);
     for (size_t p = 0; p < n; ++p) s.exitance[p] += patches.reflectance[p] * s.ambient;
   }
   progress.end();

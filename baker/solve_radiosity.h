@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 #include "baker/math.h"
@@ -35,8 +36,17 @@ struct RadiositySolution {
   Rgb ambient{};               // lm/m2 added through the ambient term
 };
 
+// Sees the progressive estimate every `every` shots (or sweeps): reflected exitance per patch,
+// with the ambient term when it is on, so even the first estimates are plausible (Lightscape's
+// early images). 0: never.
+struct SolveObserver {
+  size_t every = 0;
+  std::function<void(const std::vector<Rgb>& exitance, size_t iteration)> see;
+};
+
 // `direct` is the area-weighted mean direct irradiance of each patch in lux.
 RadiositySolution solve_radiosity(const Patches& patches, const PatchTransport& transport,
-                                  const std::vector<Rgb>& direct, const SolveOptions& options, Progress& progress);
+                                  const std::vector<Rgb>& direct, const SolveOptions& options, Progress& progress,
+                                  const SolveObserver& observer = {});
 
 }  // namespace radbake

@@ -31,6 +31,33 @@ long parse_integer(const std::string& option, const std::string& text, long lo, 
 
 }  // namespace
 
+void apply_quality_preset(const std::string& name, BakeOptions& bake) {
+  struct Preset {
+    const char* name;
+    uint32_t gather_rays, patch_rays;
+    int area_light_rays, light_rays;
+    double tolerance, subdivide;
+  };
+  // Chosen from the accuracy-versus-time front measured in docs/accuracy.md (./dev accuracy).
+  static const Preset presets[] = {
+      {"draft", 64, 512, 4, 1, 1e-2, 0},
+      {"preview", 256, 2048, 16, 4, 1e-3, 0},
+      {"production", 1024, 4096, 64, 16, 1e-4, 0},
+      {"reference", 4096, 16384, 256, 64, 1e-5, 0},
+  };
+  for (const Preset& p : presets)
+    if (name == p.name) {
+      bake.gather_rays = p.gather_rays;
+      bake.form_factors.rays_per_patch = p.patch_rays;
+      bake.direct.area_light_rays = p.area_light_rays;
+      bake.direct.punctual_rays = p.light_rays;
+      bake.solve.tolerance = p.tolerance;
+      bake.subdivision.tolerance = p.subdivide;
+      return;
+    }
+  throw UsageError("option --quality must be draft, preview, production or reference, got '" + name + "'");
+}
+
 const char* usage_text() {
   return R"(usage: radbake bake SCENE.gltf|SCENE.glb -o OUTDIR [options]
        radbake uv SCENE.gltf|SCENE.glb --stats [--json] [lightmap UV options]
@@ -59,16 +86,27 @@ lightmap UV options (bake and uv):
 
 bake options:
   -o, --output DIR        output folder (required); replaced only if it is an earlier radbake output
+  --quality NAME          draft | preview | production | reference: ray counts, tolerance and
+                          subdivision together (default preview; docs/accuracy.md has each
+                          preset's measured error and time); options given as well override it
   --tolerance X           stop when unshot light <= X of the light brought in (default 0.001)
   --solver NAME           shooting | gauss-seidel | jacobi (default shooting)
   --threads N             worker threads, 0 = all cores (default 0)
   --seed N                random seed; same seed, same output (default 1)
   --store WHAT            irradiance (lux) | radiosity (lm/m2) per texel and vertex (default irradiance)
   --gather-rays N         hemisphere rays per texel for indirect light (default 256)
-  --patch-rays N          rays per patch for form factors (default 2048)
+  --form-factors METHOD   raycast | hemicube: how form factors between patches are measured
+                          (default raycast)
+  --patch-rays N          raycast: rays per patch for form factors (default 2048)
+  --hemicube-resolution N hemicube: pixels per side of the top face, even, 2..4096 (default 64)
+  --subdivide X           adaptive subdivision: split neighbouring patches whose radiosity differs
+                          by more than X (e.g. 0.2 = 20%), re-solve, repeat (default 0 = off)
+  --subdivide-rounds N    at most N split-and-solve rounds, 1..12 (default 4)
+  --preview-every N       write the solve's progressive estimate every N shots (or sweeps) as
+                          PNG pages into OUTDIR/preview/ (default 0 = none)
   --area-light-rays N     shadow rays per texel per emitting triangle (default 16)
   --light-rays N          shadow rays per texel per punctual light (default 4)
-  --patch-size N          patch side in texels, 0 = auto (default 0)
+  --patch-size N          patch side in texels, a power of two, 0 = auto (default 0)
   --png-scale X|auto      value (lux or lm/m2) that the PNG encodes as white (default auto)
   --emission-scale X      multiply glTF emission before reading it as cd/m2 (default 1; 683 for
                           Blender's exporter, which converts lamps to candela but not emission)
@@ -196,7 +234,21 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
          else throw UsageError("option --store must be irradiance or radiosity, got '" + v + "'");
        }},
       {"--gather-rays", [&](const std::string& v) { b.bake.gather_rays = uint32_t(parse_integer("--gather-rays", v, 0, 1 << 20)); }},
-      {"--patch-rays", [&](const std::string& v) { b.bake.patch_rays = uint32_t(parse_integer("--patch-rays", v, 16, 1 << 24)); }},
+      {"--patch-rays", [&](const std::string& v) { b.bake.form_factors.rays_per_patch = uint32_t(parse_integer("--patch-rays", v, 16, 1 << 24)); }},
+      {"--form-factors", [&](const std::string& v) {
+         if (v == "raycast") b.bake.form_factors.method = FormFactorMethod::RayCast;
+         else if (v == "hemicube") b.bake.form_factors.method = FormFactorMethod::Hemicube;
+         else throw UsageError("option --form-factors must be raycast or hemicube, got '" + v + "'");
+       }},
+      {"--hemicube-resolution", [&](const std::string& v) {
+         long r = parse_integer("--hemicube-resolution", v, 2, 4096);
+         if (r % 2) throw UsageError("option --hemicube-resolution must be even, got '" + v + "'");
+         b.bake.form_factors.hemicube_resolution = int(r);
+       }},
+      {"--subdivide", [&](const std::string& v) { b.bake.subdivision.tolerance = parse_number("--subdivide", v, 0, 10); }},
+      {"--subdivide-rounds", [&](const std::string& v) { b.bake.subdivision.max_rounds = int(parse_integer("--subdivide-rounds", v, 1, 12)); }},
+      {"--preview-every", [&](const std::string& v) { b.bake.preview_every = size_t(parse_integer("--preview-every", v, 0, 1L << 40)); }},
+      {"--quality", [](const std::string&) {}},  // applied before the others, below
       {"--area-light-rays", [&](const std::string& v) { b.bake.direct.area_light_rays = int(parse_integer("--area-light-rays", v, 1, 1 << 16)); }},
       {"--light-rays", [&](const std::string& v) { b.bake.direct.punctual_rays = int(parse_integer("--light-rays", v, 1, 1 << 16)); }},
       {"--patch-size", [&](const std::string& v) { b.bake.patches.block_size = int(parse_integer("--patch-size", v, 0, 16384)); }},
@@ -209,6 +261,13 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
       {"--no-ambient", [&] { b.bake.solve.ambient_term = false; }},
   };
   atlas_options(b.atlas, with_value, flags);
+  // The preset goes first wherever it stands, so options given with it override it.
+  std::string quality = "preview";
+  for (size_t i = 1; i + 1 < args.size(); ++i)
+    if (args[i] == "--quality") {
+      quality = args[i + 1];
+      apply_quality_preset(quality, b.bake);
+    }
   bool help = false;
   parse_options(args, with_value, flags, [&](const std::string& arg) {
     if (!b.input.empty()) throw UsageError("unexpected argument '" + arg + "' (one scene per bake)");
@@ -239,7 +298,13 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
       {"seed", number(double(b.bake.seed))},
       {"store", b.bake.store == StoredQuantity::Irradiance ? "irradiance" : "radiosity"},
       {"gather-rays", number(b.bake.gather_rays)},
-      {"patch-rays", number(b.bake.patch_rays)},
+      {"quality", quality},
+      {"form-factors", b.bake.form_factors.method == FormFactorMethod::RayCast ? "raycast" : "hemicube"},
+      {"patch-rays", number(b.bake.form_factors.rays_per_patch)},
+      {"hemicube-resolution", number(b.bake.form_factors.hemicube_resolution)},
+      {"subdivide", number(b.bake.subdivision.tolerance)},
+      {"subdivide-rounds", number(b.bake.subdivision.max_rounds)},
+      {"preview-every", number(double(b.bake.preview_every))},
       {"area-light-rays", number(b.bake.direct.area_light_rays)},
       {"light-rays", number(b.bake.direct.punctual_rays)},
       {"patch-size", b.bake.patches.block_size > 0 ? number(b.bake.patches.block_size) : "auto"},

@@ -46,4 +46,7 @@ CommandLine parse_command_line(const std::vector<std::string>& args);
 
 const char* usage_text();
 
+// --quality NAME: sets the ray counts, tolerance and subdivision of a preset in `bake`.
+void apply_quality_preset(const std::string& name, BakeOptions& bake);
+
 }  // namespace radbake

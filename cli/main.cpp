@@ -34,6 +34,34 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// --preview-every: the solve's estimate as PNG pages in OUTDIR/preview/, numbered by shot (or
+// sweep), all at the scale of the first so they brighten as light is shot. They are written into
+// the staging folder, which is on disk (hidden) during the bake, and move into OUTDIR with the rest.
+class PreviewWriter {
+ public:
+  PreviewWriter(const std::string& folder, const std::string& name, bool quiet)
+      : folder_(std::filesystem::path(folder) / "preview"), name_(name), quiet_(quiet) {}
+
+  void write(const std::vector<radbake::LightmapPage>& pages, size_t iteration) {
+    if (scale_ == 0) {
+      std::filesystem::create_directories(folder_);
+      scale_ = radbake::automatic_png_scale(pages);
+      if (!quiet_) std::fprintf(stderr, "radbake: previews in %s\n", folder_.c_str());
+    }
+    char step[32];
+    std::snprintf(step, sizeof step, "_step_%08zu", iteration);
+    for (size_t p = 0; p < pages.size(); ++p)
+      radbake::write_png((folder_ / (name_ + step + "_lightmap_" + std::to_string(p) + ".png")).string(), pages[p],
+                         scale_);
+  }
+
+ private:
+  std::filesystem::path folder_;
+  std::string name_;
+  bool quiet_;
+  float scale_ = 0;
+};
+
 int run_bake(const radbake::BakeCommand& cmd) {
   using namespace radbake;
   const auto start = std::chrono::steady_clock::now();
@@ -53,14 +81,18 @@ int run_bake(const radbake::BakeCommand& cmd) {
   ProgressDisplay display(!cmd.quiet);
   BakeOptions options = cmd.bake;
   options.keep_direct = cmd.debug_dumps;
-  BakeResult result = bake(loaded.scene, atlas, options, [&](const std::string& stage, double fraction) {
-    display.update(stage, fraction);
-    return !interrupted.load();
-  });
+  const std::string name = std::filesystem::path(cmd.input).stem().string();
+  PreviewWriter previews(folder.path(), name, cmd.quiet);
+  BakeResult result = bake(
+      loaded.scene, atlas, options,
+      [&](const std::string& stage, double fraction) {
+        display.update(stage, fraction);
+        return !interrupted.load();
+      },
+      [&](const std::vector<LightmapPage>& pages, size_t iteration) { previews.write(pages, iteration); });
   display.finish();
 
   t = std::chrono::steady_clock::now();
-  const std::string name = std::filesystem::path(cmd.input).stem().string();
   const bool irradiance = cmd.bake.store == StoredQuantity::Irradiance;
   if (cmd.debug_dumps) write_debug_dumps(result, atlas.pages, folder.path(), name);
   // Per-element data is not needed for writing; freeing it keeps the write out of the peak.

@@ -63,14 +63,17 @@ LightmapFiles write_lightmaps(const std::vector<LightmapPage>& pages, const std:
     std::string stem = name + "_lightmap_" + std::to_string(p);
     files.exr.push_back(stem + ".exr");
     files.png.push_back(stem + ".png");
-    std::vector<uint8_t> encoded(page.texels.size() * 3);
-    for (size_t t = 0; t < page.texels.size(); ++t)
-      for (int c = 0; c < 3; ++c) encoded[3 * t + size_t(c)] = encode_srgb(page.texels[t][c] / png_scale);
     write_exr((std::filesystem::path(folder) / files.exr.back()).string(), page);
-    write_image((std::filesystem::path(folder) / files.png.back()).string(), page.width, page.height,
-                OIIO::TypeDesc::UINT8, encoded.data(), OIIO::TypeDesc::UINT8, false);
+    write_png((std::filesystem::path(folder) / files.png.back()).string(), page, png_scale);
   }
   return files;
+}
+
+void write_png(const std::string& path, const LightmapPage& page, float scale) {
+  std::vector<uint8_t> encoded(page.texels.size() * 3);
+  for (size_t t = 0; t < page.texels.size(); ++t)
+    for (int c = 0; c < 3; ++c) encoded[3 * t + size_t(c)] = encode_srgb(page.texels[t][c] / scale);
+  write_image(path, page.width, page.height, OIIO::TypeDesc::UINT8, encoded.data(), OIIO::TypeDesc::UINT8, false);
 }
 
 LightmapPage read_lightmap_exr(const std::string& path) {

@@ -22,6 +22,9 @@ LightmapFiles write_lightmaps(const std::vector<LightmapPage>& pages, const std:
 // One page as linear EXR: half float when every texel fits (up to 65504), full float otherwise.
 void write_exr(const std::string& path, const LightmapPage& page);
 
+// One page as sRGB PNG, `scale` (lux or lm/m2) encoded as white.
+void write_png(const std::string& path, const LightmapPage& page, float scale);
+
 // Reads an EXR page back (RGB, linear); for tests and `radbake` tools. Throws on failure.
 LightmapPage read_lightmap_exr(const std::string& path);
 

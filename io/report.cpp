@@ -20,6 +20,10 @@ void write_report(const std::string& path, const RunInfo& run, const Scene& scen
   json stages = json::object();
   for (const StageTime& t : run.io_times) stages[t.stage] = t.seconds;
   for (const StageTime& t : bake.stage_times) stages[t.stage] = t.seconds;
+  // One entry per radiosity solve: a single one unless adaptive subdivision split patches.
+  json subdivision = json::array();
+  for (const SubdivisionRound& r : bake.subdivision_rounds)
+    subdivision.push_back({{"patches", r.patches}, {"split_after_solve", r.split}});
   const SceneSummary& s = scene.summary;
   json report = {
       {"generator", "radbake"},
@@ -40,6 +44,7 @@ void write_report(const std::string& path, const RunInfo& run, const Scene& scen
                   {"moved_samples", bake.moved_samples}, {"patches", bake.patches},
                   {"patch_block_texels", bake.patch_block_size}, {"rays", bake.rays},
                   {"gather_rays_lost_to_back_faces", bake.gather_back_face_fraction}}},
+      {"subdivision", subdivision},
       {"seconds", stages},
       {"total_seconds", run.total_seconds},
       {"peak_memory_bytes", run.peak_memory_bytes},

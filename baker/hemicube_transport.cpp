@@ -1,0 +1,137 @@
+#include "baker/hemicube_transport.h"
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "baker/sampling.h"
+
+namespace radbake {
+namespace {
+
+struct HemicubePixel {
+  Vec3 direction;  // in the hemicube's frame (z along the normal), not normalised
+  float delta_form_factor;
+};
+
+// The unit hemicube's pixels: top face z = 1 over [-1, 1]^2, and four half faces of height 1.
+// Delta form factors: dA / (pi (x^2 + y^2 + 1)^2) on top, z dA / (pi (u^2 + z^2 + 1)^2) on a
+// side. They sum to 1 only as the resolution grows; they are scaled to sum to exactly 1, so that a
+// row, like a ray-cast one, accounts for all the light leaving the patch.
+std::vector<HemicubePixel> hemicube_pixels(int resolution) {
+  std::vector<HemicubePixel> pixels;
+  const float step = 2.0f / float(resolution);
+  const float area = step * step;
+  for (int j = 0; j < resolution; ++j)
+    for (int i = 0; i < resolution; ++i) {
+      float x = -1 + (float(i) + 0.5f) * step, y = -1 + (float(j) + 0.5f) * step;
+      float r = x * x + y * y + 1;
+      pixels.push_back({{x, y, 1}, area / (kPi * r * r)});
+    }
+  const Vec3 outward[4] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}};
+  for (Vec3 side : outward) {
+    Vec3 across{side.y, side.x, 0};  // along the face, perpendicular to z
+    for (int j = 0; j < resolution / 2; ++j)
+      for (int i = 0; i < resolution; ++i) {
+        float u = -1 + (float(i) + 0.5f) * step, z = (float(j) + 0.5f) * step;
+        float r = u * u + z * z + 1;
+        pixels.push_back({side + across * u + Vec3{0, 0, z}, z * area / (kPi * r * r)});
+      }
+  }
+  double total = 0;
+  for (const HemicubePixel& p : pixels) total += p.delta_form_factor;
+  for (HemicubePixel& p : pixels) p.delta_form_factor = float(p.delta_form_factor / total);
+  return pixels;
+}
+
+// The member element closest to the patch's area-weighted centroid: a point that lies on the
+// patch's own surface (a centroid of a curved patch may not) with a valid, pushed-out sample.
+uint32_t central_element(const Elements& elements, const Patches& patches, size_t p) {
+  Vec3 centroid{};
+  double area = 0;
+  for (uint32_t k = patches.first_member[p]; k < patches.first_member[p + 1]; ++k) {
+    uint32_t i = patches.members[k];
+    centroid += elements.position[i] * elements.area[i];
+    area += elements.area[i];
+  }
+  centroid = centroid / float(area);
+  uint32_t best = patches.members[patches.first_member[p]];
+  float best_distance = INFINITY;
+  for (uint32_t k = patches.first_member[p]; k < patches.first_member[p + 1]; ++k) {
+    uint32_t i = patches.members[k];
+    float d = length(elements.position[i] - centroid);
+    if (d < best_distance) best_distance = d, best = i;
+  }
+  return best;
+}
+
+}  // namespace
+
+void measure_hemicube_rows(const Elements& elements, const Patches& patches, const Surface& surface,
+                           const RayTracer& tracer, int resolution, const std::vector<uint32_t>& which, uint64_t seed,
+                           Progress& progress, MeasuredRows& out) {
+  const std::vector<HemicubePixel> pixels = hemicube_pixels(resolution);
+  const size_t patch_count = patches.size();
+
+  struct Scratch {
+    std::vector<float> share;
+    std::vector<uint32_t> touched;
+  };
+  tbb::enumerable_thread_specific<Scratch> scratch;
+  progress.begin("form factors", which.size());
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, which.size(), 4), [&](const tbb::blocked_range<size_t>& r) {
+    Scratch& s = scratch.local();
+    if (s.share.size() != patch_count) s.share.assign(patch_count, 0);
+    for (size_t w = r.begin(); w < r.end(); ++w) {
+      const uint32_t p = which[w];
+      const uint32_t i = central_element(elements, patches, p);
+      const Vec3 ng = surface.normal[elements.triangle[i]];
+      const Vec3 n = elements.normal[i];
+      const Vec3 origin = elements.position[i] + ng * elements.offset[i];
+      Vec3 t, b;
+      orthonormal_basis(n, t, b);
+      Rng rng(seed, Stream::Hemicube, p);
+      const float turn = 2 * kPi * rng.uniform();
+      const Vec3 tx = t * std::cos(turn) + b * std::sin(turn), ty = cross(n, tx);
+      double escaped = 0, lost = 0;
+      for (const HemicubePixel& pixel : pixels) {
+        Vec3 dir = above_surface(normalize(tx * pixel.direction.x + ty * pixel.direction.y + n * pixel.direction.z), ng);
+        bool left;
+        uint32_t q = patch_hit(elements, patches, surface, tracer, origin, dir, left);
+        if (q == UINT32_MAX) {
+          (left ? escaped : lost) += pixel.delta_form_factor;
+          continue;
+        }
+        if (s.share[q] == 0) s.touched.push_back(q);
+        s.share[q] += pixel.delta_form_factor;
+      }
+      std::sort(s.touched.begin(), s.touched.end());
+      auto& row = out.rows[p];
+      row.clear();
+      row.reserve(s.touched.size());
+      for (uint32_t q : s.touched) {
+        row.emplace_back(q, s.share[q]);
+        s.share[q] = 0;
+      }
+      s.touched.clear();
+      out.escaped[p] = float(escaped);
+      out.lost[p] = float(lost);
+      out.rays[p] = uint32_t(pixels.size());
+    }
+    progress.advance(r.size());
+  });
+  progress.end();
+}
+
+PatchTransport hemicube_patch_transport(const Elements& elements, const Patches& patches, const Surface& surface,
+                                        const RayTracer& tracer, int resolution, uint64_t seed, Progress& progress) {
+  MeasuredRows rows;
+  rows.resize(patches.size());
+  measure_hemicube_rows(elements, patches, surface, tracer, resolution, all_patches(patches.size()), seed, progress,
+                        rows);
+  return balanced_transport(patches, rows);
+}
+
+}  // namespace radbake

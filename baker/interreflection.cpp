@@ -1,0 +1,166 @@
+#include "baker/interreflection.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "baker/hemicube_transport.h"
+
+namespace radbake {
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Per patch: the area-weighted mean direct irradiance, and the power (lm, summed over RGB) leaving
+// on the first bounce, which weights the ray-cast form factors.
+void first_bounce(const Elements& elements, const Patches& patches, const std::vector<Rgb>& direct,
+                  std::vector<Rgb>& patch_direct, std::vector<double>& power) {
+  patch_direct.assign(patches.size(), Rgb{});
+  power.assign(patches.size(), 0);
+  for (size_t p = 0; p < patches.size(); ++p) {
+    Rgb total{};
+    for (uint32_t k = patches.first_member[p]; k < patches.first_member[p + 1]; ++k) {
+      uint32_t i = patches.members[k];
+      total += direct[i] * elements.area[i];
+    }
+    patch_direct[p] = patches.area[p] > 0 ? total / patches.area[p] : Rgb{};
+    Rgb leaving = patches.emission[p] + patches.reflectance[p] * patch_direct[p];
+    power[p] = double(sum(leaving)) * patches.area[p];
+  }
+}
+
+void measure(const Elements& elements, const Patches& patches, const Surface& surface, const RayTracer& tracer,
+             const FormFactorOptions& options, const std::vector<double>& power, const std::vector<uint32_t>& which,
+             uint64_t seed, Progress& progress, MeasuredRows& rows) {
+  if (options.method == FormFactorMethod::Hemicube)
+    measure_hemicube_rows(elements, patches, surface, tracer, options.hemicube_resolution, which, seed, progress, rows);
+  else
+    measure_ray_cast_rows(elements, patches, surface, tracer, options.rays_per_patch, power, which, seed, progress,
+                          rows);
+}
+
+// Rows of the patches that were not split carry over to the finer patches: a share landing on a
+// split patch goes to its pieces by area (reciprocity then takes the pieces' own measured rows
+// into account). The pieces are returned in `fresh`: their rows are still to be measured.
+MeasuredRows carry_rows(const Patches& coarse, const Patches& fine, const std::vector<uint8_t>& split,
+                        const MeasuredRows& rows, std::vector<uint32_t>& fresh) {
+  const size_t n = coarse.size();
+  std::vector<uint32_t> same(n, UINT32_MAX);
+  std::vector<std::vector<uint32_t>> pieces(n);
+  for (size_t p = 0; p < n; ++p) {
+    for (uint32_t k = coarse.first_member[p]; k < coarse.first_member[p + 1]; ++k) {
+      uint32_t piece = fine.patch_of_element[coarse.members[k]];
+      if (std::find(pieces[p].begin(), pieces[p].end(), piece) == pieces[p].end()) pieces[p].push_back(piece);
+    }
+    if (!split[p] && pieces[p].size() == 1) same[p] = pieces[p][0];
+  }
+  MeasuredRows out;
+  out.resize(fine.size());
+  fresh.clear();
+  for (size_t p = 0; p < n; ++p) {
+    if (same[p] == UINT32_MAX) {
+      fresh.insert(fresh.end(), pieces[p].begin(), pieces[p].end());
+      continue;
+    }
+    auto& row = out.rows[same[p]];
+    for (auto [q, f] : rows.rows[p]) {
+      if (same[q] != UINT32_MAX) {
+        row.emplace_back(same[q], f);
+        continue;
+      }
+      for (uint32_t piece : pieces[q]) row.emplace_back(piece, f * fine.area[piece] / coarse.area[q]);
+    }
+    std::sort(row.begin(), row.end());
+    out.escaped[same[p]] = rows.escaped[p];
+    out.lost[same[p]] = rows.lost[p];
+    out.rays[same[p]] = rows.rays[p];
+  }
+  std::sort(fresh.begin(), fresh.end());
+  return out;
+}
+
+}  // namespace
+
+std::vector<Rgb> gathered_irradiance(const Patches& patches, const PatchTransport& transport,
+                                     const std::vector<Rgb>& exitance) {
+  std::vector<Rgb> irradiance(patches.size());
+  for (size_t p = 0; p < patches.size(); ++p)
+    for (uint64_t k = transport.row_start[p]; k < transport.row_start[p + 1]; ++k)
+      irradiance[p] += exitance[transport.target[k]] * transport.form_factor[k];
+  return irradiance;
+}
+
+std::vector<uint8_t> patches_to_split(const Elements& e, const Surface& surface, const Patches& patches,
+                                      const std::vector<Rgb>& exitance, double tolerance) {
+  const size_t n = patches.size();
+  std::vector<double> radiosity(n);
+  double weighted = 0, area = 0;
+  for (size_t p = 0; p < n; ++p) {
+    radiosity[p] = double(sum(patches.emission[p] + exitance[p])) / 3.0;
+    weighted += radiosity[p] * patches.area[p];
+    area += patches.area[p];
+  }
+  const double dark = area > 0 ? 0.01 * weighted / area : 0;
+  std::vector<uint8_t> split(n, 0);
+  for (size_t i = 0; i < e.size(); ++i) {
+    const uint32_t p = patches.patch_of_element[i];
+    if (p == UINT32_MAX) continue;
+    const uint32_t width = uint32_t(surface.pages[e.page[i]].width);
+    for (auto [bit, step] : {std::pair<uint8_t, uint32_t>{kJoinsRight, 1}, {kJoinsDown, width}}) {
+      if (!(e.flags[i] & bit)) continue;
+      int32_t j = e.element_at[e.page[i]][e.texel[i] + step];
+      if (j < 0) continue;
+      const uint32_t q = patches.patch_of_element[size_t(j)];
+      if (q == UINT32_MAX || q == p) continue;
+      const double brighter = std::max(radiosity[p], radiosity[q]);
+      if (brighter > dark && std::fabs(radiosity[p] - radiosity[q]) > tolerance * brighter) {
+        split[p] |= patches.side[p] > 1;
+        split[q] |= patches.side[q] > 1;
+      }
+    }
+  }
+  return split;
+}
+
+Interreflection solve_interreflection(const Elements& elements, const Surface& surface, const RayTracer& tracer,
+                                      const std::vector<Rgb>& direct, const PatchOptions& patch_options,
+                                      const FormFactorOptions& form_factors, const SubdivisionOptions& subdivision,
+                                      const SolveOptions& solve, uint64_t seed, Progress& progress,
+                                      const InterreflectionObserver& observer) {
+  Interreflection out;
+  SolveObserver solve_observer{observer.every, [&](const std::vector<Rgb>& exitance, size_t iteration) {
+                                 observer.see(out.patches, out.transport, exitance, iteration);
+                               }};
+  out.patches = build_patches(elements, surface, patch_options);
+  std::vector<Rgb> patch_direct;
+  std::vector<double> power;
+  first_bounce(elements, out.patches, direct, patch_direct, power);
+  MeasuredRows rows;
+  rows.resize(out.patches.size());
+  std::vector<uint32_t> which = all_patches(out.patches.size());
+  for (int round = 0;; ++round) {
+    auto start = std::chrono::steady_clock::now();
+    measure(elements, out.patches, surface, tracer, form_factors, power, which, seed, progress, rows);
+    out.transport = balanced_transport(out.patches, rows);
+    out.form_factor_seconds += seconds_since(start);
+    start = std::chrono::steady_clock::now();
+    out.solution = solve_radiosity(out.patches, out.transport, patch_direct, solve, progress, solve_observer);
+    out.solve_seconds += seconds_since(start);
+    out.rounds.push_back({out.patches.size(), 0});
+    if (subdivision.tolerance <= 0 || round >= subdivision.max_rounds) break;
+
+    std::vector<uint8_t> split =
+        patches_to_split(elements, surface, out.patches, out.solution.exitance, subdivision.tolerance);
+    out.rounds.back().split = size_t(std::count(split.begin(), split.end(), uint8_t(1)));
+    if (out.rounds.back().split == 0) break;
+    Patches finer = split_patches(elements, surface, out.patches, split);
+    rows = carry_rows(out.patches, finer, split, rows, which);
+    out.patches = std::move(finer);
+    first_bounce(elements, out.patches, direct, patch_direct, power);
+  }
+  return out;
+}
+
+}  // namespace radbake
