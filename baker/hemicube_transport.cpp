@@ -46,9 +46,14 @@ std::vector<HemicubePixel> hemicube_pixels(int resolution) {
   return pixels;
 }
 
-// The member element closest to the patch's area-weighted centroid: a point that lies on the
-// patch's own surface (a centroid of a curved patch may not) with a valid, pushed-out sample.
-uint32_t central_element(const Elements& elements, const Patches& patches, size_t p) {
+struct Viewpoint {
+  Vec3 origin, normal, geometric_normal;
+};
+
+// Where a patch's hemicube stands: the area-weighted centroid of a flat patch (lifted like its
+// elements' ray origins); on a curved patch, whose centroid may lie off the surface, the sample
+// point of the member element nearest to it.
+Viewpoint viewpoint(const Elements& elements, const Patches& patches, const Surface& surface, size_t p) {
   Vec3 centroid{};
   double area = 0;
   for (uint32_t k = patches.first_member[p]; k < patches.first_member[p + 1]; ++k) {
@@ -57,14 +62,21 @@ uint32_t central_element(const Elements& elements, const Patches& patches, size_
     area += elements.area[i];
   }
   centroid = centroid / float(area);
-  uint32_t best = patches.members[patches.first_member[p]];
-  float best_distance = INFINITY;
+  uint32_t nearest = patches.members[patches.first_member[p]];
+  float nearest_distance = INFINITY, offset = 0;
+  bool flat = true;
+  const Vec3 ng = surface.normal[elements.triangle[nearest]];
   for (uint32_t k = patches.first_member[p]; k < patches.first_member[p + 1]; ++k) {
     uint32_t i = patches.members[k];
     float d = length(elements.position[i] - centroid);
-    if (d < best_distance) best_distance = d, best = i;
+    if (d < nearest_distance) nearest_distance = d, nearest = i;
+    offset = std::max(offset, elements.offset[i]);
+    flat = flat && dot(surface.normal[elements.triangle[i]], ng) > 0.9999f &&
+           std::fabs(dot(elements.position[i] - centroid, ng)) <= elements.offset[i];
   }
-  return best;
+  const Vec3 n = surface.normal[elements.triangle[nearest]];
+  if (flat) return {centroid + n * offset, elements.normal[nearest], n};
+  return {elements.position[nearest] + n * elements.offset[nearest], elements.normal[nearest], n};
 }
 
 }  // namespace
@@ -86,10 +98,8 @@ void measure_hemicube_rows(const Elements& elements, const Patches& patches, con
     if (s.share.size() != patch_count) s.share.assign(patch_count, 0);
     for (size_t w = r.begin(); w < r.end(); ++w) {
       const uint32_t p = which[w];
-      const uint32_t i = central_element(elements, patches, p);
-      const Vec3 ng = surface.normal[elements.triangle[i]];
-      const Vec3 n = elements.normal[i];
-      const Vec3 origin = elements.position[i] + ng * elements.offset[i];
+      const Viewpoint view = viewpoint(elements, patches, surface, p);
+      const Vec3 ng = view.geometric_normal, n = view.normal, origin = view.origin;
       Vec3 t, b;
       orthonormal_basis(n, t, b);
       Rng rng(seed, Stream::Hemicube, p);

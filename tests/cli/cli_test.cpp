@@ -65,6 +65,9 @@ TEST(Cli, UsageErrorsExitTwoWithOneLine) {
       {"bake " + fixture("lit_room.glb") + " -o " + parent + "/out --density -3", "--density must be between"},
       {"bake " + fixture("lit_room.glb") + " -o " + parent + "/out --threads", "--threads needs a value"},
       {"bake " + fixture("lit_room.glb"), "missing -o OUTDIR"},
+      {"bake " + fixture("lit_room.glb") + " -o " + parent + "/out --quality best", "--quality must be"},
+      {"bake " + fixture("lit_room.glb") + " -o " + parent + "/out --form-factors radar", "--form-factors must be"},
+      {"bake " + fixture("lit_room.glb") + " -o " + parent + "/out --hemicube-resolution 7", "must be even"},
       {"frobnicate", "unknown command"},
   };
   for (const auto& [args, says] : cases) {
@@ -126,6 +129,39 @@ TEST(Cli, BakeWritesTheFolderAndReportsProgressAsPlainLines) {
   EXPECT_EQ(report["lightmaps"]["unit"], "lx");
   EXPECT_EQ(report["options"]["solver"], "shooting");
   EXPECT_EQ(leftovers(parent), 0u);
+}
+
+TEST(Cli, QualityPresetSetsTheRayCountsAndGivenOptionsOverrideIt) {
+  std::string parent = test::fresh_folder("cli_quality");
+  // The preset applies first wherever it stands on the command line.
+  for (std::string args : {"--quality draft --gather-rays 100", "--gather-rays 100 --quality draft"}) {
+    Outcome r = radbake("bake " + fixture("lit_room.glb") + " -o " + parent + "/out --max-page-size 64 " + args);
+    ASSERT_EQ(r.status, 0) << r.err;
+    nlohmann::json options = nlohmann::json::parse(slurp(parent + "/out/report.json"))["options"];
+    EXPECT_EQ(options["quality"], "draft") << args;
+    EXPECT_EQ(options["gather-rays"], "100") << args;
+    EXPECT_EQ(options["patch-rays"], "512") << args;
+    EXPECT_EQ(options["tolerance"], "0.01") << args;
+  }
+}
+
+TEST(Cli, HemicubeSubdivisionAndPreviewsFromTheCommandLine) {
+  std::string parent = test::fresh_folder("cli_methods");
+  Outcome r = radbake("bake " + test::source_path("samples/cornell_box/cornell_box.gltf") + " -o " + parent +
+                      "/out --max-page-size 64 --form-factors hemicube --hemicube-resolution 16 --subdivide 0.5 "
+                      "--preview-every 50");
+  ASSERT_EQ(r.status, 0) << r.err;
+  nlohmann::json report = nlohmann::json::parse(slurp(parent + "/out/report.json"));
+  EXPECT_EQ(report["options"]["form-factors"], "hemicube");
+  ASSERT_GE(report["subdivision"].size(), 2u);
+  EXPECT_GT(report["subdivision"][0]["split_after_solve"].get<int>(), 0);
+  EXPECT_GT(report["subdivision"][1]["patches"].get<int>(), report["subdivision"][0]["patches"].get<int>());
+  EXPECT_TRUE(report["solver"]["converged"].get<bool>());
+  size_t previews = 0;
+  for (const auto& entry : fs::directory_iterator(parent + "/out/preview"))
+    previews += entry.path().extension() == ".png";
+  EXPECT_GE(previews, 2u);
+  EXPECT_NE(r.err.find("radbake: previews in"), std::string::npos);
 }
 
 TEST(Cli, OnATerminalProgressIsOneRedrawnBar) {
