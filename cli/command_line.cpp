@@ -36,14 +36,15 @@ void apply_quality_preset(const std::string& name, BakeOptions& bake) {
     const char* name;
     uint32_t gather_rays, patch_rays;
     int area_light_rays, light_rays;
-    double tolerance, subdivide;
+    double tolerance;
+    int patch_size;  // 0: auto
   };
   // Chosen from the accuracy-versus-time front measured in docs/accuracy.md (./dev accuracy).
   static const Preset presets[] = {
       {"draft", 64, 512, 4, 1, 1e-2, 0},
       {"preview", 256, 2048, 16, 4, 1e-3, 0},
-      {"production", 1024, 4096, 64, 16, 1e-4, 0},
-      {"reference", 4096, 16384, 256, 64, 1e-5, 0},
+      {"production", 1024, 4096, 64, 16, 1e-4, 4},
+      {"reference", 4096, 16384, 256, 64, 1e-5, 2},
   };
   for (const Preset& p : presets)
     if (name == p.name) {
@@ -52,7 +53,7 @@ void apply_quality_preset(const std::string& name, BakeOptions& bake) {
       bake.direct.area_light_rays = p.area_light_rays;
       bake.direct.punctual_rays = p.light_rays;
       bake.solve.tolerance = p.tolerance;
-      bake.subdivision.tolerance = p.subdivide;
+      bake.patches.block_size = p.patch_size;
       return;
     }
   throw UsageError("option --quality must be draft, preview, production or reference, got '" + name + "'");
@@ -87,7 +88,7 @@ lightmap UV options (bake and uv):
 bake options:
   -o, --output DIR        output folder (required); replaced only if it is an earlier radbake output
   --quality NAME          draft | preview | production | reference: ray counts, tolerance and
-                          subdivision together (default preview; docs/accuracy.md has each
+                          patch size together (default preview; docs/accuracy.md has each
                           preset's measured error and time); options given as well override it
   --tolerance X           stop when unshot light <= X of the light brought in (default 0.001)
   --solver NAME           shooting | gauss-seidel | jacobi (default shooting)

@@ -6,6 +6,9 @@ cornell_box/  The Cornell box from the published Cornell geometry (graphics.corn
               reflectances and its ceiling light.
 ferren/       After the Goral et al. (1984) demonstration: vertical boards, white on the side
               facing the viewer and brightly coloured on the back, lit from behind by a window.
+study_room/   The accuracy study's interior (docs/accuracy.md): a 4 x 3 x 2.6 m room lit by a
+              window and a ceiling lamp, a table casting a shadow, and a bookcase standing 2 cm
+              from a wall (a narrow gap light must not leak through).
 """
 import math
 import os
@@ -110,6 +113,42 @@ def ferren():
     g.save(os.path.join(out, "ferren.gltf"), bin_name="ferren.bin")
 
 
+def study_room():
+    g = Gltf("radbake samples/make_samples.py")
+    plaster = g.material("plaster", (0.75, 0.73, 0.7))
+    floor = g.material("oak", (0.45, 0.3, 0.18))
+    wood = g.material("walnut", (0.3, 0.2, 0.12))
+    blue = g.material("blue_paint", (0.15, 0.25, 0.6))
+    # An overcast window: luminance 2500 cd/m2 over 1.6 x 1.2 m.
+    sky = g.material("window", (0.0, 0.0, 0.0), emissive=(0.9, 0.95, 1.0), strength=2500.0)
+    inside = [2.0, 1.3, 1.5]
+    room = {
+        "floor": (floor, [[0, 0, 0], [4, 0, 0], [4, 0, 3], [0, 0, 3]]),
+        "ceiling": (plaster, [[0, 2.6, 0], [4, 2.6, 0], [4, 2.6, 3], [0, 2.6, 3]]),
+        "wall_south": (plaster, [[0, 0, 0], [4, 0, 0], [4, 2.6, 0], [0, 2.6, 0]]),
+        "wall_north": (blue, [[0, 0, 3], [4, 0, 3], [4, 2.6, 3], [0, 2.6, 3]]),
+        "wall_west": (plaster, [[0, 0, 0], [0, 0, 3], [0, 2.6, 3], [0, 2.6, 0]]),
+        "wall_east": (plaster, [[4, 0, 0], [4, 0, 3], [4, 2.6, 3], [4, 2.6, 0]]),
+    }
+    for name, (material, poly) in room.items():
+        g.node(name, g.mesh(name, [facing(poly, inside)], material))
+    win = [[3.999, 0.9, 0.7], [3.999, 2.1, 0.7], [3.999, 2.1, 2.3], [3.999, 0.9, 2.3]]
+    g.node("window", g.mesh("window", [facing(win, inside)], sky))
+    table = box_faces([2.2, 0.72, 1.4], [1.4, 0.06, 0.8])
+    g.node("table_top", g.mesh("table_top", list(table.values()), wood))
+    for i, (x, z) in enumerate([(1.55, 1.05), (2.85, 1.05), (1.55, 1.75), (2.85, 1.75)]):
+        leg = box_faces([x, 0.345, z], [0.06, 0.69, 0.06])
+        g.node("table_leg_%d" % i, g.mesh("table_leg_%d" % i, [leg[k] for k in ("+x", "-x", "+z", "-z")], wood))
+    # The bookcase's back stands 2 cm off the west wall: the gap behind it is dark.
+    case = box_faces([0.22, 1.0, 1.2], [0.4, 2.0, 1.2])
+    g.node("bookcase", g.mesh("bookcase", [case[k] for k in ("+x", "-x", "+y", "+z", "-z")], wood))
+    g.node("lamp", extensions=g.light("lamp", "point", 150.0, color=(1.0, 0.9, 0.75)), translation=[1.2, 2.3, 2.2])
+    out = os.path.join(HERE, "study_room")
+    os.makedirs(out, exist_ok=True)
+    g.save(os.path.join(out, "study_room.gltf"), bin_name="study_room.bin")
+
+
 if __name__ == "__main__":
     cornell_box()
     ferren()
+    study_room()

@@ -1,0 +1,165 @@
+// One run of the accuracy study (bench/accuracy drives it, one process per run so that the peak
+// memory is the run's own): bakes a study scene with radbake's own bake options and prints one
+// JSON line with the bake's time, peak memory, and its error against the reference.
+//
+//   accuracy_run SCENE [radbake bake options] [--reference FILE | --write-reference FILE]
+//
+// SCENE is furnace, emitter-over-floor or point-light-over-floor (built here, with closed-form
+// irradiance per texel) or a glTF file, whose reference is a bake at extreme settings written
+// earlier with --write-reference (the same density and page size give the same texels).
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "baker/bake.h"
+#include "baker/direct_light.h"
+#include "baker/lightmap_difference.h"
+#include "baker/material_sampler.h"
+#include "baker/surface.h"
+#include "cli/command_line.h"
+#include "io/gltf.h"
+#include "support/scene_builders.h"
+
+namespace radbake {
+namespace {
+
+struct StudyScene {
+  Scene scene;
+  // Closed-form irradiance (lux) at a sample point with its normal; empty when there is none.
+  std::function<Rgb(Vec3 position, Vec3 normal)> exact;
+};
+
+// A closed 1 m box, every face emitting 100 cd/m2 with reflectance 0.8: irradiance
+// pi * 100 / (1 - 0.8) lux everywhere (every direction sees the same radiosity).
+StudyScene furnace() {
+  StudyScene s;
+  const float luminance = 100, rho = 0.8f;
+  int m = test::add_material(s.scene, {rho, rho, rho}, {1, 1, 1}, luminance);
+  test::add_box(s.scene, {0, 0, 0}, {1, 1, 1}, true, m);
+  const float e = kExitancePerEmissiveUnit * luminance / (1 - rho);
+  s.exact = [e](Vec3, Vec3) { return Rgb{e, e, e}; };
+  return s;
+}
+
+// A 1 m square of luminance 1000 cd/m2 one metre above a black 4 m floor, facing it: the parallel
+// plates case; irradiance pi L F(point -> square) by Lambert's contour integral.
+StudyScene emitter_over_floor() {
+  StudyScene s;
+  int black = test::add_material(s.scene, {0, 0, 0});
+  const float luminance = 1000;
+  int lamp = test::add_material(s.scene, {0, 0, 0}, {1, 1, 1}, luminance);
+  test::add_quad(s.scene, {-2, 0, 2}, {4, 0, 0}, {0, 0, -4}, black);
+  test::add_quad(s.scene, {-0.5f, 1, -0.5f}, {1, 0, 0}, {0, 0, 1}, lamp);
+  s.exact = [luminance](Vec3 x, Vec3 n) {
+    if (n.y < 0.5f) return Rgb{};  // the lamp's own texels: the black floor sends nothing back
+    const Vec3 square[4] = {{-0.5f, 1, -0.5f}, {0.5f, 1, -0.5f}, {0.5f, 1, 0.5f}, {-0.5f, 1, 0.5f}};
+    float e = float(kExitancePerEmissiveUnit * luminance * polygon_form_factor(x, n, square, 4));
+    return Rgb{e, e, e};
+  };
+  return s;
+}
+
+// A 1000 cd point light 1 m above a black 4 m floor: E = I h / d^3.
+StudyScene point_light_over_floor() {
+  StudyScene s;
+  int black = test::add_material(s.scene, {0, 0, 0});
+  test::add_quad(s.scene, {-2, 0, 2}, {4, 0, 0}, {0, 0, -4}, black);
+  Light bulb;
+  bulb.intensity = 1000;
+  bulb.position = {0, 1, 0};
+  s.scene.lights.push_back(bulb);
+  s.exact = [](Vec3 x, Vec3) {
+    Vec3 d = Vec3{0, 1, 0} - x;
+    float r = length(d), e = 1000 * d.y / (r * r * r);
+    return Rgb{e, e, e};
+  };
+  return s;
+}
+
+StudyScene study_scene(const std::string& name) {
+  if (name == "furnace") return furnace();
+  if (name == "emitter-over-floor") return emitter_over_floor();
+  if (name == "point-light-over-floor") return point_light_over_floor();
+  StudyScene s;
+  s.scene = load_gltf(name).scene;
+  return s;
+}
+
+size_t peak_memory_bytes() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return size_t(usage.ru_maxrss) * 1024;
+}
+
+std::vector<Rgb> read_values(const std::string& path, size_t count) {
+  std::ifstream in(path, std::ios::binary);
+  std::vector<Rgb> values(count);
+  in.read(reinterpret_cast<char*>(values.data()), std::streamsize(count * sizeof(Rgb)));
+  if (!in || in.peek() != EOF) throw std::runtime_error(path + " is not a reference for these texels");
+  return values;
+}
+
+int run(int argc, char** argv) {
+  if (argc < 2) throw std::runtime_error("usage: accuracy_run SCENE [bake options] [--reference F | --write-reference F]");
+  std::vector<std::string> args = {"bake", argv[1], "-o", "unused"};
+  std::string reference, write_reference;
+  for (int i = 2; i < argc; ++i) {
+    std::string a = argv[i];
+    if ((a == "--reference" || a == "--write-reference") && i + 1 < argc) (a == "--reference" ? reference : write_reference) = argv[++i];
+    else args.push_back(a);
+  }
+  CommandLine cl = parse_command_line(args);
+  StudyScene study = study_scene(argv[1]);
+  Atlas atlas = ensure_lightmap_uvs(mesh_views(study.scene), cl.bake.atlas);
+
+  auto start = std::chrono::steady_clock::now();
+  BakeResult result = bake(study.scene, atlas, cl.bake.bake);
+  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  const Elements& e = result.elements;
+  if (!write_reference.empty()) {
+    std::ofstream out(write_reference, std::ios::binary);
+    out.write(reinterpret_cast<const char*>(result.irradiance.data()), std::streamsize(e.size() * sizeof(Rgb)));
+  }
+  std::vector<Rgb> exact;
+  if (!reference.empty()) exact = read_values(reference, e.size());
+  else if (study.exact) {
+    exact.resize(e.size());
+    for (size_t i = 0; i < e.size(); ++i) exact[i] = study.exact(e.position[i], e.normal[i]);
+  }
+  double total = 0;
+  for (size_t i = 0; i < e.size(); ++i)
+    if (e.valid(i)) total += sum(result.irradiance[i]) / 3.0;
+  nlohmann::ordered_json line = {{"scene", argv[1]}, {"seconds", seconds}, {"peak_memory_bytes", peak_memory_bytes()},
+                                 {"texels", result.report.valid_elements}, {"patches", result.report.patches},
+                                 {"rays", result.report.rays}, {"energy_error", result.report.balance.relative_error},
+                                 {"mean_lux", total / double(std::max<size_t>(1, result.report.valid_elements))}};
+  if (!exact.empty()) {
+    // Undilated pages: texels no element covers are black in both and not compared.
+    std::vector<AtlasPage> pages = build_surface(study.scene, atlas).pages;
+    LightmapDifference d = compare_lightmaps(compose_pages(e, exact, pages, false),
+                                             compose_pages(e, result.irradiance, pages, false), {});
+    line["rmse"] = d.all.rmse;
+    line["p99"] = d.all.p99;
+    line["reference_mean_lux"] = d.all.reference_level;
+  }
+  std::printf("%s\n", line.dump().c_str());
+  return 0;
+}
+
+}  // namespace
+}  // namespace radbake
+
+int main(int argc, char** argv) {
+  try {
+    return radbake::run(argc, argv);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "accuracy_run: error: %s\n", e.what());
+    return 2;
+  }
+}
