@@ -22,7 +22,11 @@ LightmapFiles write_lightmaps(const std::vector<LightmapPage>& pages, const std:
 // One page as linear EXR: half float when every texel fits (up to 65504), full float otherwise.
 void write_exr(const std::string& path, const LightmapPage& page);
 
-// Reads an EXR page back (RGB, linear); for tests and `radbake` tools. Throws on failure.
+// 8-bit RGB pixels, rows top to bottom, as a PNG (written as they are: no encoding).
+void write_png(const std::string& path, int width, int height, const std::vector<uint8_t>& rgb);
+
+// Reads an EXR page back (RGB, linear); for tests and `radbake diff`. Throws InputError naming the
+// file when it is not a readable RGB image.
 LightmapPage read_lightmap_exr(const std::string& path);
 
 }  // namespace radbake
