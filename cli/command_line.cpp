@@ -56,7 +56,7 @@ TEXCOORD_N as one page of --max-page-size instead (for comparing UVs made elsewh
 folder, whose NAME_lightmap_N.exr pages are matched by N. Per page and over all pages it prints
 the texels compared, the relative RMSE, the largest texel error (in the bake's unit: lux, or lm/m2
 for radiosity) and the 50th, 95th and 99th percentiles of the relative texel error, where
-  - a texel is compared unless it is zero in both bakes (unused page space);
+  - a texel is compared unless it is zero in both bakes (unused page space, unlit surfaces);
   - its value is the mean of its R, G, B and its error the mean of |B - A| over R, G, B;
   - its relative error is error / max(A, floor), floor = --relative-floor x the reference level,
     the mean of A over the compared texels, so dark texels are not divided by almost nothing;
