@@ -3,7 +3,8 @@
 // false-colour picture of where. Pure computation over LightmapPage; reading and writing is io/'s.
 //
 // Definitions (also in `radbake diff --help` and the README):
-// - A texel is compared unless it is zero in every channel of both pages (unused page space).
+// - A texel is compared unless it is zero in every channel of both pages: unused page space, or a
+//   surface no light reaches in either, where they agree exactly and would dilute the statistics.
 // - Its value is the mean of its RGB channels; its error |B - A| is the mean over the channels of
 //   the absolute difference, in the pages' unit (lux for irradiance).
 // - Its relative error is error / max(A, floor x reference level), where the reference level is

@@ -29,6 +29,11 @@ long parse_integer(const std::string& option, const std::string& text, long lo, 
   return long(v);
 }
 
+// Percent on the command line, a fraction in the options structs.
+double parse_percent(const std::string& option, const std::string& text, double lo) {
+  return parse_number(option, text, lo, 1e6) / 100;
+}
+
 }  // namespace
 
 void apply_quality_preset(const std::string& name, BakeOptions& bake) {
@@ -62,6 +67,8 @@ void apply_quality_preset(const std::string& name, BakeOptions& bake) {
 const char* usage_text() {
   return R"(usage: radbake bake SCENE.gltf|SCENE.glb -o OUTDIR [options]
        radbake uv SCENE.gltf|SCENE.glb --stats [--json] [lightmap UV options]
+       radbake diff A B [--json] [--max-rmse PCT] [--max-p50|p95|p99 PCT] [--max-error X]
+                    [--diff-images DIR]
        radbake --help | --version
 
 Bakes diffuse global illumination (radiosity with colour bleeding) into lightmaps.
@@ -72,6 +79,17 @@ materials, the lightmap pages as NAME_lightmap_N.exr (linear) and .png (sRGB), a
 utilisation, L2 stretch (Sander et al. 2001; 1 = none), seam length, overlapping texels, flipped
 triangles, padding violations, time. With --evaluate-texcoord N it measures the scene's own
 TEXCOORD_N as one page of --max-page-size instead (for comparing UVs made elsewhere).
+
+`radbake diff` compares two bakes of one scene, A the reference: each an EXR page or an output
+folder, whose NAME_lightmap_N.exr pages are matched by N. Per page and over all pages it prints
+the texels compared, the relative RMSE, the largest texel error (in the bake's unit: lux, or lm/m2
+for radiosity) and the 50th, 95th and 99th percentiles of the relative texel error, where
+  - a texel is compared unless it is zero in both bakes (unused page space, unlit surfaces);
+  - its value is the mean of its R, G, B and its error the mean of |B - A| over R, G, B;
+  - its relative error is error / max(A, floor), floor = --relative-floor x the reference level,
+    the mean of A over the compared texels, so dark texels are not divided by almost nothing;
+  - relative RMSE = RMS of the errors / the reference level; percentiles are by nearest rank.
+Thresholds apply to the all-pages numbers.
 
 lightmap UV options (bake and uv):
   --density N             lightmap texels per metre (default: auto, the most that fits one page)
@@ -115,10 +133,27 @@ bake options:
   --debug-dumps           also write OUTDIR/debug/*.exr: light by source, material, normals,
                           sample flags and patch layout, undilated
   --quiet                 no progress and no warnings on stderr
+
+diff options:
+  --json                  machine-readable statistics on stdout
+  --max-rmse PCT          fail when the relative RMSE exceeds PCT percent
+  --max-p50 PCT           fail when the median relative error exceeds PCT percent (the
+                          statistic least moved by noise, most by a change of overall light)
+  --max-p95 PCT           fail when the 95th percentile relative error exceeds PCT percent
+  --max-p99 PCT           fail when the 99th percentile relative error exceeds PCT percent
+  --max-error X           fail when a texel's error exceeds X (lux, or lm/m2)
+  --relative-floor PCT    percent of the reference level that relative errors are taken
+                          against at least (default 10)
+  --diff-images DIR       write DIR/PAGE_diff.png per page of B: white where B equals A, towards
+                          red where B is brighter and blue where darker, full colour at
+                          --image-scale; black where not compared
+  --image-scale PCT       relative difference shown at full colour (default 10)
+
   -h, --help              this text
   --version               print the version
 
-exit status: 0 done, 2 bad input or usage, 1 anything else
+exit status: 0 done, 2 bad input or usage, 1 anything else;
+diff: 0 when every threshold holds, 1 when one is exceeded (named on stderr), 2 bad input or usage
 )";
 }
 
@@ -199,6 +234,34 @@ void parse_uv(const std::vector<std::string>& args, CommandLine& cl) {
   if (u.input.empty()) throw UsageError("missing input scene (radbake uv SCENE.gltf --stats)");
 }
 
+void parse_diff(const std::vector<std::string>& args, CommandLine& cl) {
+  DiffCommand& d = cl.diff;
+  std::map<std::string, Setter> with_value = {
+      {"--max-rmse", [&](const std::string& v) { d.limits.rmse = parse_percent("--max-rmse", v, 0); }},
+      {"--max-p50", [&](const std::string& v) { d.limits.p50 = parse_percent("--max-p50", v, 0); }},
+      {"--max-p95", [&](const std::string& v) { d.limits.p95 = parse_percent("--max-p95", v, 0); }},
+      {"--max-p99", [&](const std::string& v) { d.limits.p99 = parse_percent("--max-p99", v, 0); }},
+      {"--max-error", [&](const std::string& v) { d.limits.max_error = parse_number("--max-error", v, 0, 1e30); }},
+      {"--relative-floor",
+       [&](const std::string& v) { d.difference.relative_floor = parse_percent("--relative-floor", v, 1e-6); }},
+      {"--image-scale",
+       [&](const std::string& v) { d.difference.image_scale = parse_percent("--image-scale", v, 1e-6); }},
+      {"--diff-images", [&](const std::string& v) { d.image_folder = v; }},
+  };
+  std::map<std::string, Flag> flags = {{"--json", [&] { d.json = true; }}};
+  bool help = false;
+  parse_options(args, with_value, flags, [&](const std::string& arg) {
+    if (d.reference.empty()) d.reference = arg;
+    else if (d.candidate.empty()) d.candidate = arg;
+    else throw UsageError("unexpected argument '" + arg + "' (radbake diff compares two bakes)");
+  }, help);
+  if (help) {
+    cl.action = Action::Help;
+    return;
+  }
+  if (d.candidate.empty()) throw UsageError("missing bakes to compare (radbake diff A B)");
+}
+
 }  // namespace
 
 CommandLine parse_command_line(const std::vector<std::string>& args) {
@@ -212,6 +275,11 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
   if (args[0] == "uv") {
     cl.action = Action::Uv;
     parse_uv(args, cl);
+    return cl;
+  }
+  if (args[0] == "diff") {
+    cl.action = Action::Diff;
+    parse_diff(args, cl);
     return cl;
   }
   if (args[0] != "bake") throw UsageError("unknown command '" + args[0] + "' (try radbake --help)");

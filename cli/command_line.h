@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "baker/bake.h"
+#include "baker/lightmap_difference.h"
 #include "uv/atlas.h"
 
 namespace radbake {
@@ -33,12 +34,22 @@ struct UvCommand {
   int evaluate_texcoord = -1;  // measure the input's TEXCOORD_n as one page instead of unwrapping
 };
 
-enum class Action { Bake, Uv, Help, Version };
+// `radbake diff`: how far a bake is from a reference bake of the same scene.
+struct DiffCommand {
+  std::string reference, candidate;  // each an EXR page or an output folder
+  DifferenceOptions difference;
+  DifferenceLimits limits;
+  std::string image_folder;  // where the false-colour difference pages go; empty: not written
+  bool json = false;         // machine-readable statistics
+};
+
+enum class Action { Bake, Uv, Diff, Help, Version };
 
 struct CommandLine {
   Action action = Action::Help;
   BakeCommand bake;
   UvCommand uv;
+  DiffCommand diff;
 };
 
 // Throws UsageError naming the offending argument.

@@ -1,4 +1,5 @@
-// radbake: a thin shell over the pipeline in DESIGN.md. Parse, load, unwrap, bake, write.
+// radbake: a thin shell over the pipeline in DESIGN.md. Parse, load, unwrap, bake, write; or
+// compare two bakes (cli/diff_command).
 #include <sys/resource.h>
 
 #include <atomic>
@@ -12,6 +13,7 @@
 #include "baker/errors.h"
 #include "baker/surface.h"
 #include "cli/command_line.h"
+#include "cli/diff_command.h"
 #include "cli/progress_display.h"
 #include "io/debug_dumps.h"
 #include "io/gltf.h"
@@ -51,7 +53,7 @@ class PreviewWriter {
     char step[32];
     std::snprintf(step, sizeof step, "_step_%08zu", iteration);
     for (size_t p = 0; p < pages.size(); ++p)
-      radbake::write_png((folder_ / (name_ + step + "_lightmap_" + std::to_string(p) + ".png")).string(), pages[p],
+      radbake::write_lightmap_png((folder_ / (name_ + step + "_lightmap_" + std::to_string(p) + ".png")).string(), pages[p],
                          scale_);
   }
 
@@ -193,6 +195,7 @@ int main(int argc, char** argv) {
       case Action::Version: std::puts("radbake 0.1.0"); return 0;
       case Action::Bake: return run_bake(cl.bake);
       case Action::Uv: return run_uv(cl.uv);
+      case Action::Diff: return run_diff(cl.diff);
     }
   } catch (const UsageError& e) {
     std::fprintf(stderr, "radbake: error: %s\n", e.what());

@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "baker/errors.h"
+
 namespace radbake {
 namespace {
 
@@ -39,6 +41,10 @@ void write_exr(const std::string& path, const LightmapPage& page) {
               page.texels.data(), OIIO::TypeDesc::FLOAT, true);
 }
 
+void write_png(const std::string& path, int width, int height, const std::vector<uint8_t>& rgb) {
+  write_image(path, width, height, OIIO::TypeDesc::UINT8, rgb.data(), OIIO::TypeDesc::UINT8, false);
+}
+
 float automatic_png_scale(const std::vector<LightmapPage>& pages) {
   std::vector<float> brightest;
   for (const LightmapPage& page : pages)
@@ -64,27 +70,30 @@ LightmapFiles write_lightmaps(const std::vector<LightmapPage>& pages, const std:
     files.exr.push_back(stem + ".exr");
     files.png.push_back(stem + ".png");
     write_exr((std::filesystem::path(folder) / files.exr.back()).string(), page);
-    write_png((std::filesystem::path(folder) / files.png.back()).string(), page, png_scale);
+    write_lightmap_png((std::filesystem::path(folder) / files.png.back()).string(), page, png_scale);
   }
   return files;
 }
 
-void write_png(const std::string& path, const LightmapPage& page, float scale) {
+void write_lightmap_png(const std::string& path, const LightmapPage& page, float scale) {
   std::vector<uint8_t> encoded(page.texels.size() * 3);
   for (size_t t = 0; t < page.texels.size(); ++t)
     for (int c = 0; c < 3; ++c) encoded[3 * t + size_t(c)] = encode_srgb(page.texels[t][c] / scale);
-  write_image(path, page.width, page.height, OIIO::TypeDesc::UINT8, encoded.data(), OIIO::TypeDesc::UINT8, false);
+  write_png(path, page.width, page.height, encoded);
 }
 
 LightmapPage read_lightmap_exr(const std::string& path) {
   auto in = OIIO::ImageInput::open(path);
-  if (!in) throw std::runtime_error("cannot open " + path + ": " + OIIO::geterror());
+  if (!in) throw InputError("cannot read " + path + ": " + OIIO::geterror());
   const OIIO::ImageSpec& spec = in->spec();
+  if (spec.nchannels < 3)
+    throw InputError(path + " has " + std::to_string(spec.nchannels) + " channel(s); a lightmap page is RGB");
   LightmapPage page;
   page.width = spec.width;
   page.height = spec.height;
   std::vector<float> pixels(size_t(spec.width) * spec.height * 3);
-  if (!in->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, pixels.data())) throw std::runtime_error("cannot read " + path);
+  if (!in->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, pixels.data()))
+    throw InputError("cannot read " + path + ": " + in->geterror());
   page.texels.resize(size_t(spec.width) * spec.height);
   page.valid.assign(page.texels.size(), 1);
   for (size_t t = 0; t < page.texels.size(); ++t) page.texels[t] = {pixels[3 * t], pixels[3 * t + 1], pixels[3 * t + 2]};

@@ -23,9 +23,13 @@ LightmapFiles write_lightmaps(const std::vector<LightmapPage>& pages, const std:
 void write_exr(const std::string& path, const LightmapPage& page);
 
 // One page as sRGB PNG, `scale` (lux or lm/m2) encoded as white.
-void write_png(const std::string& path, const LightmapPage& page, float scale);
+void write_lightmap_png(const std::string& path, const LightmapPage& page, float scale);
 
-// Reads an EXR page back (RGB, linear); for tests and `radbake` tools. Throws on failure.
+// 8-bit RGB pixels, rows top to bottom, as a PNG (written as they are: no encoding).
+void write_png(const std::string& path, int width, int height, const std::vector<uint8_t>& rgb);
+
+// Reads an EXR page back (RGB, linear); for tests and `radbake diff`. Throws InputError naming the
+// file when it is not a readable RGB image.
 LightmapPage read_lightmap_exr(const std::string& path);
 
 }  // namespace radbake

@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "io/gltf.h"
+#include "support/commands.h"
 #include "support/scene_builders.h"
 
 namespace radbake {
@@ -20,25 +21,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Outcome {
-  int status;
-  std::string out, err;
-};
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-Outcome run(const std::string& command) {
-  std::string out = ::testing::TempDir() + "/cli_out.txt", err = ::testing::TempDir() + "/cli_err.txt";
-  int raw = std::system((command + " > " + out + " 2> " + err + " < /dev/null").c_str());
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
-}
-
-Outcome radbake(const std::string& args) { return run(std::string(RADBAKE_BINARY) + " " + args); }
+using test::Outcome;
+using test::radbake;
+using test::run;
+using test::slurp;
 
 std::string fixture(const std::string& name) { return test::source_path("tests/fixtures/" + name); }
 
@@ -277,8 +263,9 @@ TEST(Cli, ReadmeExamplesRun) {
     if (line.rfind(prefix, 0) != 0) continue;
     std::string args = line.substr(prefix.size());
     for (size_t at; (at = args.find(" out/")) != std::string::npos;) args.replace(at, 5, " " + parent + "/");
-    for (size_t at; (at = args.find(" samples/")) != std::string::npos;)
-      args.replace(at, 9, " " + test::source_path("samples/"));
+    for (const std::string folder : {" samples/", " tests/"})
+      for (size_t at; (at = args.find(folder)) != std::string::npos;)
+        args.replace(at, folder.size(), " " + test::source_path(folder.substr(1)));
     Outcome r = radbake(args + (args.find("bake") == 0 ? " --quiet" : ""));
     EXPECT_EQ(r.status, 0) << line << "\n" << r.err;
     ++ran;

@@ -1,0 +1,142 @@
+// `radbake diff` as a test script sees it: exit status 0 when the thresholds hold, 1 when one is
+// exceeded (named on stderr), 2 with one error line for anything that cannot be compared.
+#include <gtest/gtest.h>
+
+#include <OpenImageIO/imageio.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "io/lightmap_images.h"
+#include "support/commands.h"
+#include "support/scene_builders.h"
+
+namespace radbake {
+namespace {
+
+using test::Outcome;
+using test::radbake;
+
+// A bake folder as radbake writes it, as far as `diff` reads it: pages of one value each.
+std::string bake_folder(const std::string& name, const std::vector<std::pair<int, float>>& pages,
+                        const std::string& quantity = "irradiance", const std::string& unit = "lx") {
+  std::string folder = test::fresh_folder(name);
+  for (size_t p = 0; p < pages.size(); ++p) {
+    LightmapPage page;
+    page.width = page.height = pages[p].first;
+    page.texels.assign(size_t(page.width) * size_t(page.height), Rgb{1, 1, 1} * pages[p].second);
+    page.valid.assign(page.texels.size(), 1);
+    write_exr(folder + "/room_lightmap_" + std::to_string(p) + ".exr", page);
+  }
+  std::ofstream(folder + "/report.json")
+      << nlohmann::json{{"lightmaps", {{"quantity", quantity}, {"unit", unit}}}}.dump();
+  return folder;
+}
+
+size_t lines(const std::string& text) { return size_t(std::count(text.begin(), text.end(), '\n')); }
+
+TEST(Diff, ABakeAgainstItselfDiffersByNothing) {
+  std::string a = bake_folder("diff_same", {{8, 100}, {4, 50}});
+  Outcome r = radbake("diff " + a + " " + a + " --max-rmse 0 --max-error 0");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  EXPECT_NE(r.out.find("0.00%"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("  all "), std::string::npos) << r.out;  // two pages: a line for both together
+}
+
+TEST(Diff, ExceededThresholdsExitOneAndAreNamed) {
+  // B is 10% (10 lux) brighter than A everywhere.
+  std::string a = bake_folder("diff_a", {{8, 100}}), b = bake_folder("diff_b", {{8, 110}});
+  Outcome holds = radbake("diff " + a + " " + b + " --max-rmse 10.5 --max-p50 11 --max-p99 11 --max-error 10.5");
+  EXPECT_EQ(holds.status, 0) << holds.err;
+  EXPECT_NE(holds.out.find("rmse  10%, limit 10.5%: ok"), std::string::npos) << holds.out;
+
+  Outcome exceeded = radbake("diff " + a + " " + b + " --max-rmse 5 --max-p99 11 --max-error 2");
+  EXPECT_EQ(exceeded.status, 1);
+  EXPECT_EQ(exceeded.err,
+            "radbake: diff: rmse 10% exceeds --max-rmse 5%\n"
+            "radbake: diff: error 10 lx exceeds --max-error 2 lx\n");
+  EXPECT_NE(exceeded.out.find("EXCEEDED"), std::string::npos);
+}
+
+TEST(Diff, JsonHoldsTheStatisticsAndTheVerdict) {
+  std::string a = bake_folder("diff_json_a", {{8, 100}}), b = bake_folder("diff_json_b", {{8, 110}});
+  Outcome r = radbake("diff " + a + " " + b + " --json --max-p95 5");
+  EXPECT_EQ(r.status, 1);
+  nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["unit"], "lx");
+  EXPECT_EQ(j["pages"][0]["texels"], 64);
+  // The page values are exact in half float, so only double rounding remains.
+  EXPECT_NEAR(j["all"]["rmse_percent"].get<double>(), 10, 1e-6);
+  EXPECT_NEAR(j["all"]["max_error"].get<double>(), 10, 1e-6);
+  EXPECT_EQ(j["checks"][0]["name"], "p95");
+  EXPECT_TRUE(j["checks"][0]["exceeded"].get<bool>());
+  EXPECT_FALSE(j["passed"].get<bool>());
+}
+
+TEST(Diff, DifferenceImagesShowWhereAndWhichWay) {
+  std::string a = bake_folder("diff_image_a", {{8, 100}, {4, 100}}), b = bake_folder("diff_image_b", {{8, 110}, {4, 90}});
+  std::string images = test::fresh_folder("diff_images") + "/new";  // created by radbake
+  Outcome r = radbake("diff " + a + " " + b + " --diff-images " + images);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("full colour at 10%"), std::string::npos) << r.out;  // the scale is stated
+  const std::pair<const char*, std::vector<uint8_t>> expected[] = {{"/room_lightmap_0_diff.png", {255, 0, 0}},
+                                                                   {"/room_lightmap_1_diff.png", {0, 0, 255}}};
+  for (const auto& [file, colour] : expected) {
+    auto in = OIIO::ImageInput::open(images + file);
+    ASSERT_TRUE(in) << file;
+    std::vector<uint8_t> px(size_t(in->spec().width) * size_t(in->spec().height) * 3);
+    ASSERT_TRUE(in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, px.data()));
+    EXPECT_EQ(std::vector<uint8_t>(px.begin(), px.begin() + 3), colour) << file;
+  }
+}
+
+class DiffBadInput : public ::testing::TestWithParam<std::pair<std::string, std::string>> {};
+
+TEST_P(DiffBadInput, ExitsTwoWithOneErrorLine) {
+  std::string parent = test::fresh_folder("diff_bad_" + GetParam().first);
+  const std::string a = bake_folder("diff_bad_a", {{8, 100}});
+  std::ofstream(parent + "/junk_lightmap_0.exr") << "not an image";
+  const std::map<std::string, std::string> args = {
+      {"missing", a + " " + parent + "/nothing"},
+      {"unreadable", a + " " + parent},
+      {"unknown_option", a + " " + a + " --max-rsme 3"},
+      {"bad_number", a + " " + a + " --max-rmse three"},
+      {"one_bake", a},
+      {"three_bakes", a + " " + a + " " + a},
+      {"page_size", a + " " + bake_folder("diff_bad_size", {{16, 100}})},
+      {"page_count", a + " " + bake_folder("diff_bad_count", {{8, 100}, {8, 100}})},
+      {"quantity", a + " " + bake_folder("diff_bad_quantity", {{8, 100}}, "radiosity", "lm/m2")},
+  };
+  Outcome r = radbake("diff " + args.at(GetParam().first));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err.rfind("radbake: error: ", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find(GetParam().second), std::string::npos) << r.err;
+  EXPECT_EQ(lines(r.err), 1u) << r.err;
+  EXPECT_EQ(r.out, "");
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, DiffBadInput,
+    ::testing::Values(std::make_pair("missing", "nothing does not exist"),
+                      std::make_pair("unreadable", "cannot read"),
+                      std::make_pair("unknown_option", "unknown option --max-rsme"),
+                      std::make_pair("bad_number", "--max-rmse needs a number"),
+                      std::make_pair("one_bake", "missing bakes to compare"),
+                      std::make_pair("three_bakes", "unexpected argument"),
+                      std::make_pair("page_size", "page 0 is 8x8 in the reference but 16x16 in the other bake"),
+                      std::make_pair("page_count", "different page counts: 1 in the reference, 2 in the other bake"),
+                      std::make_pair("quantity", "holds irradiance (lx) but")),
+    [](const auto& info) { return info.param.first; });
+
+TEST(Diff, HelpDefinesTheStatistics) {
+  Outcome r = radbake("diff --help");
+  EXPECT_EQ(r.status, 0);
+  for (const char* text : {"radbake diff A B", "--max-rmse PCT", "--max-p50 PCT", "--max-error X", "--diff-images DIR",
+                           "zero in both bakes", "mean of |B - A| over R, G, B", "max(A, floor)"})
+    EXPECT_NE(r.out.find(text), std::string::npos) << text;
+}
+
+}  // namespace
+}  // namespace radbake

@@ -1,0 +1,21 @@
+// Running the radbake binary as a script or pipeline would, for the command-line tests.
+#pragma once
+
+#include <string>
+
+namespace radbake::test {
+
+struct Outcome {
+  int status;  // exit status; -1 when the command did not exit (a crash)
+  std::string out, err;
+};
+
+// Through the shell, stdin from /dev/null, stdout and stderr captured.
+Outcome run(const std::string& command);
+
+// The radbake under test with `args`.
+Outcome radbake(const std::string& args);
+
+std::string slurp(const std::string& path);
+
+}  // namespace radbake::test
