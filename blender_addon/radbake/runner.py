@@ -15,11 +15,6 @@ from . import compat
 STAGES = ["elements", "sample placement", "punctual lights", "area lights", "form factors", "radiosity",
           "final gather"]
 PROGRESS = re.compile(r"^radbake: (.+) (\d+)%$")
-QUALITY_ARGS = {
-    'DRAFT': ["--gather-rays", "64", "--area-light-rays", "8", "--light-rays", "2", "--patch-rays", "512"],
-    'PREVIEW': [],
-    'PRODUCTION': ["--gather-rays", "1024", "--area-light-rays", "64", "--light-rays", "16", "--patch-rays", "4096"],
-}
 # Blender's exporter turns lights into candela with 683 lm/W but leaves emission strength as it
 # is: scaling emission by the same 683 keeps emitting surfaces as bright next to lamps as Cycles
 # shows them.
@@ -67,7 +62,7 @@ class Bake:
                 "--max-page-size", str(settings.max_page_size), "--emission-scale", EMISSION_SCALE]
         if settings.texel_density > 0:
             args += ["--density", "%g" % settings.texel_density]
-        return args + QUALITY_ARGS[settings.quality]
+        return args + ["--quality", settings.quality.lower()]
 
     def start(self, settings):
         self.process = subprocess.Popen(self.command(settings), stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
