@@ -132,10 +132,13 @@ int run(int argc, char** argv) {
     exact.resize(e.size());
     for (size_t i = 0; i < e.size(); ++i) exact[i] = study.exact(e.position[i], e.normal[i]);
   }
+  double solve_seconds = 0;
+  for (const StageTime& t : result.report.stage_times)
+    if (t.stage == "radiosity") solve_seconds = t.seconds;
   double total = 0;
   for (size_t i = 0; i < e.size(); ++i)
     if (e.valid(i)) total += sum(result.irradiance[i]) / 3.0;
-  nlohmann::ordered_json line = {{"scene", argv[1]}, {"seconds", seconds}, {"peak_memory_bytes", peak_memory_bytes()},
+  nlohmann::ordered_json line = {{"scene", argv[1]}, {"seconds", seconds}, {"solve_seconds", solve_seconds}, {"peak_memory_bytes", peak_memory_bytes()},
                                  {"texels", result.report.valid_elements}, {"patches", result.report.patches},
                                  {"rays", result.report.rays}, {"energy_error", result.report.balance.relative_error},
                                  {"mean_lux", total / double(std::max<size_t>(1, result.report.valid_elements))}};
