@@ -109,9 +109,10 @@ BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& optio
                                                         options.seed, progress, observer);
   const double interreflection_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  report.stage_times.push_back({"patches", interreflection_seconds - light_between.form_factor_seconds -
+                                               light_between.solve_seconds});
   report.stage_times.push_back({"form factors", light_between.form_factor_seconds});
-  report.stage_times.push_back(
-      {"radiosity", interreflection_seconds - light_between.form_factor_seconds});
+  report.stage_times.push_back({"radiosity", light_between.solve_seconds});
   malloc_trim(0);
   const Patches& patches = light_between.patches;
   PatchTransport& transport = light_between.transport;

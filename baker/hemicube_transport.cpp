@@ -87,15 +87,10 @@ void measure_hemicube_rows(const Elements& elements, const Patches& patches, con
   const std::vector<HemicubePixel> pixels = hemicube_pixels(resolution);
   const size_t patch_count = patches.size();
 
-  struct Scratch {
-    std::vector<float> share;
-    std::vector<uint32_t> touched;
-  };
-  tbb::enumerable_thread_specific<Scratch> scratch;
+  tbb::enumerable_thread_specific<RowTally> tallies;
   progress.begin("form factors", which.size());
   tbb::parallel_for(tbb::blocked_range<size_t>(0, which.size(), 4), [&](const tbb::blocked_range<size_t>& r) {
-    Scratch& s = scratch.local();
-    if (s.share.size() != patch_count) s.share.assign(patch_count, 0);
+    RowTally& tally = tallies.local();
     for (size_t w = r.begin(); w < r.end(); ++w) {
       const uint32_t p = which[w];
       const Viewpoint view = viewpoint(elements, patches, surface, p);
@@ -114,18 +109,9 @@ void measure_hemicube_rows(const Elements& elements, const Patches& patches, con
           (left ? escaped : lost) += pixel.delta_form_factor;
           continue;
         }
-        if (s.share[q] == 0) s.touched.push_back(q);
-        s.share[q] += pixel.delta_form_factor;
+        tally.add(q, pixel.delta_form_factor, patch_count);
       }
-      std::sort(s.touched.begin(), s.touched.end());
-      auto& row = out.rows[p];
-      row.clear();
-      row.reserve(s.touched.size());
-      for (uint32_t q : s.touched) {
-        row.emplace_back(q, s.share[q]);
-        s.share[q] = 0;
-      }
-      s.touched.clear();
+      tally.take(out.rows[p], 1.0f);
       out.escaped[p] = float(escaped);
       out.lost[p] = float(lost);
       out.rays[p] = uint32_t(pixels.size());

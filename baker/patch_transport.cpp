@@ -143,15 +143,13 @@ void measure_ray_cast_rows(const Elements& elements, const Patches& patches, con
   }
 
   struct Scratch {
-    std::vector<uint32_t> count;
-    std::vector<uint32_t> touched;
+    RowTally tally;
     std::vector<double> cumulative_area;
   };
   tbb::enumerable_thread_specific<Scratch> scratch;
   progress.begin("form factors", which.size());
   tbb::parallel_for(tbb::blocked_range<size_t>(0, which.size(), 8), [&](const tbb::blocked_range<size_t>& r) {
     Scratch& s = scratch.local();
-    if (s.count.size() != patch_count) s.count.assign(patch_count, 0);
     for (size_t w = r.begin(); w < r.end(); ++w) {
       const uint32_t p = which[w];
       const uint32_t* first = &patches.members[patches.first_member[p]];
@@ -181,17 +179,9 @@ void measure_ray_cast_rows(const Elements& elements, const Patches& patches, con
           lost += !left;
           continue;
         }
-        if (s.count[q]++ == 0) s.touched.push_back(q);
+        s.tally.add(q, 1, patch_count);
       }
-      std::sort(s.touched.begin(), s.touched.end());
-      auto& row = out.rows[p];
-      row.clear();
-      row.reserve(s.touched.size());
-      for (uint32_t q : s.touched) {
-        row.emplace_back(q, float(s.count[q]) / float(rays));
-        s.count[q] = 0;
-      }
-      s.touched.clear();
+      s.tally.take(out.rows[p], float(rays));
       out.escaped[p] = float(escaped) / float(rays);
       out.lost[p] = float(lost) / float(rays);
     }

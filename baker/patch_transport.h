@@ -4,6 +4,7 @@
 // furnace test and the energy balance rely on.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -37,6 +38,32 @@ struct MeasuredRows {
     lost.resize(patches);
     rays.resize(patches);
   }
+};
+
+// One thread's tally of what a patch's rays (or hemicube pixels) leave on each target patch,
+// taken out as the patch's row, sorted by target.
+class RowTally {
+ public:
+  void add(uint32_t target, double share, size_t patch_count) {
+    if (share_.size() != patch_count) share_.assign(patch_count, 0);
+    if (share_[target] == 0) touched_.push_back(target);
+    share_[target] += share;
+  }
+  // Each target's tally divided by `divisor` into `row`; the tally starts again from nothing.
+  void take(std::vector<std::pair<uint32_t, float>>& row, float divisor) {
+    std::sort(touched_.begin(), touched_.end());
+    row.clear();
+    row.reserve(touched_.size());
+    for (uint32_t q : touched_) {
+      row.emplace_back(q, float(share_[q]) / divisor);
+      share_[q] = 0;
+    }
+    touched_.clear();
+  }
+
+ private:
+  std::vector<double> share_;
+  std::vector<uint32_t> touched_;
 };
 
 // Measures the rows of the patches in `which` into `into` (sized for all patches). Every patch

@@ -108,7 +108,9 @@ TEST(AdaptiveSubdivision, SplitsOnlyWhereNeighboursDiffer) {
     count += split[q];
     // Patches are 0.25 m wide and the edge falls between two patch centres, so only patches
     // centred within one patch width of x = 0 (1 cm for float round-off) may split.
-    if (split[q]) EXPECT_LE(std::fabs(centre_x[q]), 0.26f) << "patch " << q;
+    if (split[q]) {
+      EXPECT_LE(std::fabs(centre_x[q]), 0.26f) << "patch " << q;
+    }
   }
   EXPECT_GE(count, 16u);  // both sides of the edge, 8 rows of 0.25 m
   // Each split patch becomes up to four quarters (fewer where its block is cut by the chart's
