@@ -109,6 +109,10 @@ std::vector<Rgb> emitter_irradiance(const Elements& e, const Surface& surface, c
       for (size_t k = 0; k < emitters.size(); ++k) {
         if (factor[k] <= 0) continue;
         const Emitter& em = emitters[k];
+        if (em.uniform && !options.shadow_rays) {  // nothing can come between: the exact form factor
+          h += em.emission * float(factor[k]);
+          continue;
+        }
         double share = factor[k] * sum(em.emission) / total;
         int rays = std::clamp(int(std::ceil(budget * share)), 1, options.area_light_rays);
         uint32_t target_pattern = rng.next_u32(), origin_pattern = rng.next_u32();
@@ -125,7 +129,7 @@ std::vector<Rgb> emitter_irradiance(const Elements& e, const Surface& surface, c
           // A target within the ray offset of the receiver's own plane (an emitter meeting it at
           // an edge) is in plain view; a ray there would only graze the receiver itself.
           bool grazing = !(dist > 0) || dot(d, ng) <= 0;
-          if (!grazing && tracer.occluded(origin, d / dist, 0.0f, dist)) continue;
+          if (!grazing && options.shadow_rays && tracer.occluded(origin, d / dist, 0.0f, dist)) continue;
           visible += em.uniform ? em.emission : materials.emission(em.triangle, triangle_bary(em, y), 1.0f);
         }
         h += visible * float(factor[k] / rays);

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <memory>
 #include <thread>
 
@@ -36,13 +37,6 @@ class StageClock {
   std::vector<StageTime>& times_;
 };
 
-bool anything_emits(const Scene& scene) {
-  if (!scene.lights.empty()) return true;
-  for (const MeshInstance& inst : scene.instances)
-    if (material_of(scene, inst.material).emits() && inst.triangle_count() > 0) return true;
-  return false;
-}
-
 // Radiosity from irradiance: emission plus reflected light, lm/m2.
 std::vector<Rgb> radiosity_of(const Elements& elements, const std::vector<Rgb>& irradiance) {
   std::vector<Rgb> radiosity(irradiance.size());
@@ -51,45 +45,30 @@ std::vector<Rgb> radiosity_of(const Elements& elements, const std::vector<Rgb>& 
   return radiosity;
 }
 
-}  // namespace
+std::string percent(double fraction) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g%%", 100 * fraction);
+  return text;
+}
 
-BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& options,
-                const ProgressCallback& on_progress, const PreviewCallback& on_preview) {
-  if (!anything_emits(scene))
-    throw InputError("nothing in the scene emits light: no KHR_lights_punctual light and no emissive material");
-  std::unique_ptr<tbb::global_control> thread_limit;
-  if (options.threads > 0)
-    thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, options.threads);
+// How the interreflection solve ended, for the plan: the tolerance on unshot light is what stops
+// it, never a bounce count; the iteration guard is named when it was reached instead.
+PlanDecision solve_outcome(const RadiositySolution& s, const SolveOptions& options) {
+  std::string what = std::to_string(s.iterations) + (options.solver == Solver::Shooting ? " shots" : " sweeps");
+  std::string unshot = "unshot light " + percent(s.relative_unshot) + " of what the lights brought in";
+  if (s.converged)
+    return {"interreflection", "stopped after " + what, unshot + ", within the tolerance of " + percent(options.tolerance)};
+  return {"interreflection", "stopped after " + what + " by the iteration guard",
+          unshot + ", above the tolerance of " + percent(options.tolerance)};
+}
 
-  Progress progress(on_progress);
-  BakeResult result;
+// Light between surfaces: patches, form factors and the radiosity solve, then the final gather
+// at texel resolution. Adds the indirect light to result.direct into result.irradiance and fills
+// the report's solve figures and energy balance.
+void interreflect(const Elements& elements, const Surface& surface, const RayTracer& tracer, const BakeOptions& options,
+                  const EffectPlan& plan, double punctual_power, Progress& progress,
+                  const PreviewCallback& on_preview, BakeResult& result) {
   BakeReport& report = result.report;
-  StageClock clock(report.stage_times);
-
-  Surface surface = clock.run("surface", [&] { return build_surface(scene, atlas); });
-  auto tracer = clock.run("ray tracer", [&] { return std::make_unique<RayTracer>(surface); });
-  MaterialSampler materials(scene, surface, options.emission_scale);
-  Elements elements = clock.run("elements", [&] { return build_elements(surface, materials, options.elements, progress); });
-  clock.run("sample placement", [&] {
-    place_samples(elements, surface, *tracer, options.seed, progress);
-    return 0;
-  });
-  if (std::none_of(elements.flags.begin(), elements.flags.end(), [](uint8_t f) { return !(f & kBuried); }))
-    throw InputError("no lightmap texel covers a visible surface: raise the texel density or the page size");
-
-  std::vector<Rgb> punctual = clock.run("punctual lights", [&] {
-    return punctual_irradiance(elements, surface, scene.lights, *tracer, options.direct, options.seed, progress);
-  });
-  result.direct = clock.run("area lights", [&] {
-    return emitter_irradiance(elements, surface, materials, *tracer, options.direct, options.seed, progress);
-  });
-  double punctual_power = 0;  // lm, mean of RGB, landing on valid elements
-  for (size_t i = 0; i < elements.size(); ++i) {
-    if (elements.valid(i)) punctual_power += double(sum(punctual[i])) / 3.0 * elements.area[i];
-    result.direct[i] += punctual[i];
-  }
-  punctual = {};
-
   InterreflectionObserver observer;
   if (on_preview && options.preview_every > 0) {
     observer.every = options.preview_every;
@@ -103,10 +82,12 @@ BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& optio
       on_preview(compose_pages(elements, estimate, surface.pages), iteration);
     };
   }
+  SolveOptions solve = options.solve;
+  if (plan.one_channel) solve.one_channel_colour = plan.light_colour;
   auto started = std::chrono::steady_clock::now();
-  Interreflection light_between = solve_interreflection(elements, surface, *tracer, result.direct, options.patches,
-                                                        options.form_factors, options.subdivision, options.solve,
-                                                        options.seed, progress, observer);
+  Interreflection light_between = solve_interreflection(elements, surface, tracer, result.direct, options.patches,
+                                                        options.form_factors, options.subdivision, solve, options.seed,
+                                                        progress, observer);
   const double interreflection_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   report.stage_times.push_back({"patches", interreflection_seconds - light_between.form_factor_seconds -
@@ -115,18 +96,90 @@ BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& optio
   report.stage_times.push_back({"radiosity", light_between.solve_seconds});
   malloc_trim(0);
   const Patches& patches = light_between.patches;
-  PatchTransport& transport = light_between.transport;
   const RadiositySolution& solution = light_between.solution;
   GatherStats gather_stats;
+  StageClock clock(report.stage_times);
   result.irradiance = clock.run("final gather", [&] {
-    return gather_indirect(elements, patches, surface, *tracer, solution.exitance, options.gather_rays, options.seed,
+    return gather_indirect(elements, patches, surface, tracer, solution.exitance, options.gather_rays, options.seed,
                            progress, &gather_stats);
   });
+  for (size_t i = 0; i < elements.size(); ++i) result.irradiance[i] += result.direct[i];
+  report.balance = energy_balance(elements, patches, light_between.transport, solution.exitance, punctual_power,
+                                  result.irradiance);
 
+  report.patches = patches.size();
+  report.patch_block_size = patches.block_size;
+  report.subdivision_rounds = light_between.rounds;
+  report.solver_iterations = solution.iterations;
+  report.solved_channels = solution.channels;
+  report.unshot_relative = solution.relative_unshot;
+  report.converged = solution.converged;
+  report.ambient = solution.ambient;
+  report.gather_back_face_fraction = gather_stats.back_face_fraction;
+  report.plan.push_back(solve_outcome(solution, solve));
+  if (!solution.converged)
+    report.warnings.push_back("the radiosity solve stopped at its iteration guard before reaching the tolerance");
+  result.patch_of_element = std::move(light_between.patches.patch_of_element);
+}
+
+}  // namespace
+
+BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& options,
+                const ProgressCallback& on_progress, const PreviewCallback& on_preview) {
+  return bake(scene, atlas, options, plan_effects(scene, options.plan), on_progress, on_preview);
+}
+
+BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& options, const EffectPlan& plan,
+                const ProgressCallback& on_progress, const PreviewCallback& on_preview) {
+  std::unique_ptr<tbb::global_control> thread_limit;
+  if (options.threads > 0)
+    thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, options.threads);
+
+  Progress progress(on_progress);
+  BakeResult result;
+  BakeReport& report = result.report;
+  StageClock clock(report.stage_times);
+
+  Surface surface = clock.run("surface", [&] { return build_surface(scene, atlas); });
+  auto tracer = clock.run("ray tracer", [&] { return std::make_unique<RayTracer>(surface); });
+  MaterialSampler materials(scene, surface, options.emission_scale);
+  ElementOptions element_options = options.elements;
+  if (plan.exhaustive) element_options.filter = FootprintFilter::Everywhere;
+  else if (!plan.texture_sampling) element_options.filter = FootprintFilter::BetweenMaterials;
+  Elements elements = clock.run("elements", [&] { return build_elements(surface, materials, element_options, progress); });
+  clock.run("sample placement", [&] {
+    place_samples(elements, surface, *tracer, options.seed, progress);
+    return 0;
+  });
+  if (std::none_of(elements.flags.begin(), elements.flags.end(), [](uint8_t f) { return !(f & kBuried); }))
+    throw InputError("no lightmap texel covers a visible surface: raise the texel density or the page size");
+
+  DirectLightOptions direct = options.direct;
+  direct.shadow_rays = plan.shadow_rays;
+  direct.cull_unlit = !plan.exhaustive;
+  direct.light_traced = plan.light_traced;
+  std::vector<Rgb> punctual = clock.run("punctual lights", [&] {
+    return punctual_irradiance(elements, surface, scene.lights, *tracer, direct, options.seed, progress);
+  });
+  result.direct = clock.run("area lights", [&] {
+    return emitter_irradiance(elements, surface, materials, *tracer, direct, options.seed, progress);
+  });
+  double punctual_power = 0;  // lm, mean of RGB, landing on valid elements
+  for (size_t i = 0; i < elements.size(); ++i) {
+    if (elements.valid(i)) punctual_power += double(sum(punctual[i])) / 3.0 * elements.area[i];
+    result.direct[i] += punctual[i];
+  }
+  punctual = {};
+
+  report.plan = plan.decisions;
+  report.warnings = plan.warnings;
   const size_t n = elements.size();
-  for (size_t i = 0; i < n; ++i) result.irradiance[i] += result.direct[i];
-  report.balance = energy_balance(elements, patches, transport, solution.exitance, punctual_power, result.irradiance);
-  transport = {};  // the largest patch-level structure; nothing after this needs it
+  if (plan.interreflection) {
+    interreflect(elements, surface, *tracer, options, plan, punctual_power, progress, on_preview, result);
+  } else {
+    result.irradiance = result.direct;
+    result.patch_of_element.assign(n, UINT32_MAX);
+  }
   if (!options.keep_direct) result.direct = {};
   std::vector<Rgb> radiosity;
   if (options.store == StoredQuantity::Radiosity) radiosity = radiosity_of(elements, result.irradiance);
@@ -141,20 +194,10 @@ BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& optio
     report.valid_elements += elements.valid(i);
     report.buried_elements += !elements.valid(i);
     report.moved_samples += (elements.flags[i] & kPushedOut) != 0;
+    report.filtered_texels += (elements.flags[i] & kFiltered) != 0;
   }
-  report.patches = patches.size();
-  report.patch_block_size = patches.block_size;
-  report.subdivision_rounds = light_between.rounds;
   report.rays = tracer->rays_cast();
-  report.solver_iterations = solution.iterations;
-  report.unshot_relative = solution.relative_unshot;
-  report.converged = solution.converged;
-  report.ambient = solution.ambient;
-  report.gather_back_face_fraction = gather_stats.back_face_fraction;
-  if (!solution.converged)
-    report.warnings.push_back("the radiosity solve stopped at its iteration guard before reaching the tolerance");
   result.elements = std::move(elements);
-  result.patch_of_element = std::move(light_between.patches.patch_of_element);
   return result;
 }
 

@@ -13,6 +13,7 @@
 #include "baker/finish.h"
 #include "baker/interreflection.h"
 #include "baker/patches.h"
+#include "baker/plan.h"
 #include "baker/progress.h"
 #include "baker/scene.h"
 #include "baker/solve_radiosity.h"
@@ -27,6 +28,7 @@ enum class StoredQuantity {
 };
 
 struct BakeOptions {
+  PlanOptions plan;
   ElementOptions elements;
   PatchOptions patches;
   DirectLightOptions direct;
@@ -54,7 +56,10 @@ struct BakeReport {
   std::vector<SubdivisionRound> subdivision_rounds;
   uint64_t rays = 0;
   std::vector<StageTime> stage_times;
+  std::vector<PlanDecision> plan;  // what was simulated and why, with how the interreflection solve ended
   size_t solver_iterations = 0;
+  int solved_channels = 0;     // 0 when the plan skipped interreflection
+  size_t filtered_texels = 0;  // elements whose material was box-filtered over their footprint
   double unshot_relative = 0;  // unshot power / power the direct light brings in
   bool converged = false;
   Rgb ambient{};
@@ -77,7 +82,12 @@ struct BakeResult {
 // plus the patches' interreflection so far (no final gather), in the stored quantity, dilated.
 using PreviewCallback = std::function<void(const std::vector<LightmapPage>& pages, size_t iteration)>;
 
-// Throws InputError when nothing in the scene emits light, Cancelled when the callback says so.
+// Simulates what `plan` says (plan_effects(scene, options.plan), or a plan a test has changed).
+// Throws InputError when no texel covers a visible surface, Cancelled when the callback says so.
+BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& options, const EffectPlan& plan,
+                const ProgressCallback& on_progress = {}, const PreviewCallback& on_preview = {});
+
+// Plans first; also throws InputError when nothing in the scene emits light.
 BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& options,
                 const ProgressCallback& on_progress = {}, const PreviewCallback& on_preview = {});
 

@@ -17,6 +17,11 @@ namespace radbake {
 struct DirectLightOptions {
   int punctual_rays = 4;    // shadow rays per element per light, spread over the texel footprint
   int area_light_rays = 16; // shadow rays per element per emitting triangle, at most
+  // Both set from the effect plan. false: a convex enclosure, every light is seen unoccluded.
+  bool shadow_rays = true;
+  // Cast no shadow ray where a light's unoccluded contribution is zero (outside its range or cone).
+  bool cull_unlit = true;
+  std::vector<uint8_t> light_traced;  // per light: 0 skips it (the plan culled it); empty: every light
 };
 
 std::vector<Rgb> punctual_irradiance(const Elements& elements, const Surface& surface,

@@ -89,13 +89,14 @@ Elements build_elements(const Surface& surface, const MaterialSampler& materials
       const Piece* last = &pieces[group_start[i + 1]];
       const Piece* largest = first;
       double area = 0;
-      bool uniform = true;
+      bool uniform = options.filter != FootprintFilter::Everywhere;
       for (const Piece* p = first; p != last; ++p) {
         const Vec2* c = &surface.corner_lightmap[3 * p->triangle];
         float lm_area = 0.5f * std::fabs(cross2(c[1] - c[0], c[2] - c[0]));
         area += double(p->area) * surface.area[p->triangle] / lm_area;
         if (p->area > largest->area) largest = p;
-        uniform &= materials.is_uniform(p->triangle) && surface.material[p->triangle] == surface.material[first->triangle];
+        uniform &= surface.material[p->triangle] == surface.material[first->triangle] &&
+                   (options.filter == FootprintFilter::BetweenMaterials || materials.is_uniform(p->triangle));
       }
       uint32_t t = largest->triangle;
       Vec2 bary = lightmap_bary(surface, t, largest->centroid);
@@ -116,6 +117,7 @@ Elements build_elements(const Surface& surface, const MaterialSampler& materials
         continue;
       }
       // Box filter over the footprint: k x k points, each on whichever piece's triangle holds it.
+      e.flags[i] |= kFiltered;
       const AtlasPage& page = surface.pages[largest->page];
       Vec2 corner{float(largest->texel % uint32_t(page.width)), float(largest->texel / uint32_t(page.width))};
       Rgb rho{}, emit{};

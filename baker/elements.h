@@ -20,6 +20,7 @@ enum ElementFlags : uint8_t {
   kBuried = 4,        // the sample sees mostly back faces: it is inside geometry, valued by dilation
   kJoinsRight = 8,    // the element to the right (same chart) is on the same side of all geometry
   kJoinsDown = 16,    // likewise the element below; patches only grow across these joins
+  kFiltered = 32,     // reflectance and emission are box-filtered over the footprint (else read once)
 };
 
 struct Elements {
@@ -44,8 +45,16 @@ struct Elements {
   bool valid(size_t i) const { return !(flags[i] & kBuried); }
 };
 
+// Which texels average their material over their footprint (the others read it at their sample).
+enum class FootprintFilter {
+  WhereMaterialsVary,  // texels holding a textured or vertex-coloured triangle, or two materials
+  BetweenMaterials,    // only texels holding two materials: the plan found no texture or vertex colour
+  Everywhere,          // every texel, constant material or not: the full simulation
+};
+
 struct ElementOptions {
-  int footprint_samples = 4;  // per side: footprint_samples^2 material samples per textured texel
+  int footprint_samples = 4;  // per side: footprint_samples^2 material samples per filtered texel
+  FootprintFilter filter = FootprintFilter::WhereMaterialsVary;
 };
 
 // Rasterises every triangle into its page and makes one element per covered texel.

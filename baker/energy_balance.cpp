@@ -9,6 +9,7 @@ EnergyBalance energy_balance(const Elements& e, const Patches& patches, const Pa
                              const std::vector<Rgb>& patch_reflected_exitance, double punctual_power,
                              const std::vector<Rgb>& irradiance) {
   EnergyBalance b;
+  b.measured = true;
   b.emitted = punctual_power;
   for (size_t i = 0; i < e.size(); ++i) {
     if (!e.valid(i)) continue;

@@ -18,6 +18,7 @@ struct EnergyBalance {
   double escaped = 0;   // left the scene
   double lost = 0;      // struck back faces or texels buried inside geometry (treated as black)
   double relative_error = 0;  // (emitted - absorbed - escaped - lost) / emitted
+  bool measured = false;  // false when the plan skipped interreflection: no ray measured what escapes
 };
 
 EnergyBalance energy_balance(const Elements& elements, const Patches& patches, const PatchTransport& transport,

@@ -53,17 +53,20 @@ std::vector<Rgb> punctual_irradiance(const Elements& e, const Surface& surface, 
       Rng rng(seed, Stream::DirectLight, i);
       Rgb total{};
       for (size_t l = 0; l < lights.size(); ++l) {
-        uint32_t pattern = rng.next_u32();
+        uint32_t pattern = rng.next_u32();  // drawn for culled lights too, so the others' samples stay the same
+        if (l < options.light_traced.size() && !options.light_traced[l]) continue;
         Rgb sum{};
         for (int k = 0; k < rays; ++k) {
           // Each ray from its own point of the texel, so shadow edges are antialiased.
           Vec3 x = footprint_point(e, surface, i, cmj_sample(uint32_t(k), uint32_t(rays), pattern));
-          Vec3 dir;
-          float dist;
+          Vec3 dir{};
+          float dist = 0;
           Rgb value = punctual_light_irradiance(lights[l], x, e.normal[i], &dir, &dist);
-          if (max_component(value) <= 0 || dot(ng, dir) <= 0) continue;
+          if (dot(ng, dir) <= 0 || (options.cull_unlit && max_component(value) <= 0)) continue;
           Vec3 origin = x + ng * e.offset[i];
-          if (!tracer.occluded(origin, dir, 0.0f, std::isfinite(dist) ? dist * (1 - 1e-5f) : INFINITY)) sum += value;
+          if (!options.shadow_rays ||
+              !tracer.occluded(origin, dir, 0.0f, std::isfinite(dist) ? dist * (1 - 1e-5f) : INFINITY))
+            sum += value;
         }
         total += sum / float(rays);
       }

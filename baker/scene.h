@@ -55,6 +55,9 @@ struct Material {
   float emissive_strength = 1;  // KHR_materials_emissive_strength
   TextureRef emissive_texture;
   bool double_sided = false;
+  // Features of the source material that diffuse radiosity leaves out (transmission, specular,
+  // volume...), named for the user by io/; the plan warns about them.
+  std::vector<std::string> unsimulated;
 
   bool emits() const { return emissive_strength > 0 && max_component(emissive) > 0; }
 };

@@ -7,7 +7,31 @@
 namespace radbake {
 namespace {
 
-double mean_power(Rgb exitance, float area) { return (double(exitance.x) + exitance.y + exitance.z) / 3.0 * area; }
+// The solve runs on Rgb, or on float when the plan found one channel enough; these make both read
+// the same. Means are taken in double, so a grey Rgb and its float give bit-identical solves.
+constexpr int channels(float) { return 1; }
+constexpr int channels(Rgb) { return 3; }
+float& channel(float& v, int) { return v; }
+float& channel(Rgb& v, int c) { return v[c]; }
+double mean(float v) { return v; }
+double mean(Rgb v) { return (double(v.x) + v.y + v.z) / 3.0; }
+double mean_abs(float v) { return std::fabs(double(v)); }
+double mean_abs(Rgb v) { return (std::fabs(double(v.x)) + std::fabs(double(v.y)) + std::fabs(double(v.z))) / 3.0; }
+float non_negative(float v) { return std::max(0.0f, v); }
+Rgb non_negative(Rgb v) { return {non_negative(v.x), non_negative(v.y), non_negative(v.z)}; }
+
+template <typename V>
+double mean_power(V exitance, float area) { return mean(exitance) * area; }
+
+// What the templates below read of the patches: area, reflectance and direct light in V.
+template <typename V>
+struct Problem {
+  const Patches& patches;
+  const PatchTransport& transport;
+  std::vector<V> reflectance, direct;
+  size_t size() const { return patches.size(); }
+  float area(size_t p) const { return patches.area[p]; }
+};
 
 // Gathering needs, for each receiver q, the sources p with F_pq weighted by A_p / A_q.
 struct Incoming {
@@ -34,88 +58,110 @@ Incoming transpose(const Patches& patches, const PatchTransport& t) {
   return in;
 }
 
+// What patch q would change by if it gathered now: rho_q (D_q + sum_p F_qp B_p) - B_q.
+template <typename V>
+V residual(const Problem<V>& pb, const Incoming& in, const std::vector<V>& b, size_t q) {
+  V h = pb.direct[q];
+  for (uint64_t k = in.start[q]; k < in.start[q + 1]; ++k) h += b[in.source[k]] * in.weight[k];
+  return pb.reflectance[q] * h - b[q];
+}
+
 // Residual of the current estimate: what each patch would still change by, as power.
-double residual_power(const Patches& patches, const Incoming& in, const std::vector<Rgb>& direct,
-                      const std::vector<Rgb>& b) {
+template <typename V>
+double residual_power(const Problem<V>& pb, const Incoming& in, const std::vector<V>& b) {
   double total = 0;
-  for (size_t q = 0; q < patches.size(); ++q) {
-    Rgb h = direct[q];
-    for (uint64_t k = in.start[q]; k < in.start[q + 1]; ++k) h += b[in.source[k]] * in.weight[k];
-    Rgb r = patches.reflectance[q] * h - b[q];
-    total += (std::fabs(double(r.x)) + std::fabs(double(r.y)) + std::fabs(double(r.z))) / 3.0 * patches.area[q];
-  }
+  for (size_t q = 0; q < pb.size(); ++q) total += mean_abs(residual(pb, in, b, q)) * pb.area(q);
   return total;
 }
 
 // Cohen et al. 1988: the unshot light, spread evenly and bounced by the mean reflectance.
-Rgb ambient_exitance(const Patches& patches, const std::vector<Rgb>& unshot) {
+template <typename V>
+V ambient_exitance(const Problem<V>& pb, const std::vector<V>& unshot) {
   double area = 0;
-  Rgb unshot_power{}, reflected{}, ambient{};
-  for (size_t p = 0; p < patches.size(); ++p) {
-    area += patches.area[p];
-    unshot_power += unshot[p] * patches.area[p];
-    reflected += patches.reflectance[p] * patches.area[p];
+  V unshot_power{}, reflected{}, ambient{};
+  for (size_t p = 0; p < pb.size(); ++p) {
+    area += pb.area(p);
+    unshot_power += unshot[p] * pb.area(p);
+    reflected += pb.reflectance[p] * pb.area(p);
   }
   if (area <= 0) return ambient;
-  for (int c = 0; c < 3; ++c) {
-    double rho = std::min(double(reflected[c]) / area, 0.999);
-    ambient[c] = float(unshot_power[c] / area / (1.0 - rho));
+  for (int c = 0; c < channels(V{}); ++c) {
+    double rho = std::min(double(channel(reflected, c)) / area, 0.999);
+    channel(ambient, c) = float(double(channel(unshot_power, c)) / area / (1.0 - rho));
   }
   return ambient;
 }
 
-// Shows the estimate so far to the observer, ambient term included when it is on.
-void show(const Patches& patches, const SolveOptions& options, const SolveObserver& observer,
-          const RadiositySolution& s, const std::vector<Rgb>& unshot) {
-  if (observer.every == 0 || s.iterations % observer.every != 0) return;
-  std::vector<Rgb> estimate = s.exitance;
-  if (options.ambient_term) {
-    Rgb ambient = ambient_exitance(patches, unshot);
-    for (size_t p = 0; p < estimate.size(); ++p) estimate[p] += patches.reflectance[p] * ambient;
-  }
-  observer.see(estimate, s.iterations);
+// Values in the caller's Rgb: one channel scales the light colour.
+Rgb as_rgb(Rgb v, Rgb) { return v; }
+Rgb as_rgb(float v, Rgb colour) { return colour * v; }
+template <typename V>
+std::vector<Rgb> as_rgb(const std::vector<V>& v, Rgb colour) {
+  std::vector<Rgb> out(v.size());
+  for (size_t p = 0; p < v.size(); ++p) out[p] = as_rgb(v[p], colour);
+  return out;
 }
 
-void shoot(const Patches& patches, const PatchTransport& t, const std::vector<Rgb>& direct,
-           const SolveOptions& options, const SolveObserver& observer, Progress& progress, RadiositySolution& s,
-           std::vector<Rgb>& unshot) {
-  const size_t n = patches.size();
+// Shows the estimate so far to the observer, ambient term included when it is on.
+template <typename V>
+void show(const Problem<V>& pb, const SolveOptions& options, const SolveObserver& observer, size_t iteration,
+          const std::vector<V>& exitance, const std::vector<V>& unshot) {
+  if (observer.every == 0 || iteration % observer.every != 0) return;
+  std::vector<V> estimate = exitance;
+  if (options.ambient_term) {
+    V ambient = ambient_exitance(pb, unshot);
+    for (size_t p = 0; p < estimate.size(); ++p) estimate[p] += pb.reflectance[p] * ambient;
+  }
+  observer.see(as_rgb(estimate, options.one_channel_colour), iteration);
+}
+
+struct Outcome {
+  size_t iterations = 0;
+  double unshot_power = 0;
+};
+
+template <typename V>
+Outcome shoot(const Problem<V>& pb, double input_power, const SolveOptions& options, const SolveObserver& observer,
+              Progress& progress, std::vector<V>& exitance, std::vector<V>& unshot) {
+  const size_t n = pb.size();
+  const PatchTransport& t = pb.transport;
   // Max-heap of unshot power with lazy deletion: an entry is stale when its power is outdated.
   using Entry = std::pair<double, uint32_t>;
   std::priority_queue<Entry> heap;
   std::vector<double> power(n);
   double total_unshot = 0;
   for (size_t p = 0; p < n; ++p) {
-    unshot[p] = s.exitance[p] = patches.reflectance[p] * direct[p];
-    power[p] = mean_power(unshot[p], patches.area[p]);
+    unshot[p] = exitance[p] = pb.reflectance[p] * pb.direct[p];
+    power[p] = mean_power(unshot[p], pb.area(p));
     total_unshot += power[p];
     heap.push({power[p], uint32_t(p)});
   }
-  const double target = options.tolerance * s.input_power;
+  const double target = options.tolerance * input_power;
+  Outcome out;
   size_t next_report = 0;
-  while (total_unshot > target && !heap.empty() && s.iterations < options.max_iterations) {
+  while (total_unshot > target && !heap.empty() && out.iterations < options.max_iterations) {
     auto [pw, p] = heap.top();
     heap.pop();
     if (pw != power[p]) continue;
-    Rgb shot = unshot[p] * patches.area[p];  // power leaving p, lm per channel
+    V shot = unshot[p] * pb.area(p);  // power leaving p, lm per channel
     unshot[p] = {};
     total_unshot -= power[p];
     power[p] = 0;
     for (uint64_t k = t.row_start[p]; k < t.row_start[p + 1]; ++k) {
       uint32_t q = t.target[k];
-      Rgb gain = patches.reflectance[q] * shot * (t.form_factor[k] / patches.area[q]);
-      s.exitance[q] += gain;
+      V gain = pb.reflectance[q] * shot * (t.form_factor[k] / pb.area(q));
+      exitance[q] += gain;
       unshot[q] += gain;
-      double added = mean_power(gain, patches.area[q]);
+      double added = mean_power(gain, pb.area(q));
       power[q] += added;
       total_unshot += added;
       heap.push({power[q], q});
     }
-    ++s.iterations;
-    show(patches, options, observer, s, unshot);
+    ++out.iterations;
+    show(pb, options, observer, out.iterations, exitance, unshot);
     // Now and then: recompute the sum, so floating-point drift stays out of the stopping test,
     // and drop stale heap entries, so the heap stays linear in the patch count.
-    if (s.iterations % 4096 == 0 || heap.size() > 8 * n + 1024) {
+    if (out.iterations % 4096 == 0 || heap.size() > 8 * n + 1024) {
       total_unshot = 0;
       heap = {};
       for (size_t q = 0; q < n; ++q) {
@@ -123,53 +169,75 @@ void shoot(const Patches& patches, const PatchTransport& t, const std::vector<Rg
         if (power[q] > 0) heap.push({power[q], uint32_t(q)});
       }
     }
-    if (s.iterations >= next_report) {
+    if (out.iterations >= next_report) {
       progress.advance(0);
-      next_report = s.iterations + 1024;
+      next_report = out.iterations + 1024;
     }
   }
-  s.unshot_power = 0;
-  for (double v : power) s.unshot_power += v;
+  for (double v : power) out.unshot_power += v;
+  return out;
 }
 
 // The residual per patch: the light each would still shoot, which the ambient term spreads.
-void residual_per_patch(const Patches& patches, const Incoming& in, const std::vector<Rgb>& direct,
-                        const std::vector<Rgb>& b, std::vector<Rgb>& unshot) {
-  for (size_t q = 0; q < patches.size(); ++q) {
-    Rgb h = direct[q];
-    for (uint64_t k = in.start[q]; k < in.start[q + 1]; ++k) h += b[in.source[k]] * in.weight[k];
-    Rgb r = patches.reflectance[q] * h - b[q];
-    unshot[q] = {std::max(0.0f, r.x), std::max(0.0f, r.y), std::max(0.0f, r.z)};
-  }
+template <typename V>
+void residual_per_patch(const Problem<V>& pb, const Incoming& in, const std::vector<V>& b, std::vector<V>& unshot) {
+  for (size_t q = 0; q < pb.size(); ++q) unshot[q] = non_negative(residual(pb, in, b, q));
 }
 
-void gather(const Patches& patches, const PatchTransport& t, const std::vector<Rgb>& direct,
-            const SolveOptions& options, const SolveObserver& observer, Progress& progress, RadiositySolution& s,
-            std::vector<Rgb>& unshot) {
-  const size_t n = patches.size();
-  Incoming in = transpose(patches, t);
-  std::vector<Rgb>& b = s.exitance;
-  for (size_t q = 0; q < n; ++q) b[q] = {};
-  std::vector<Rgb> next(n);
-  const double target = options.tolerance * s.input_power;
-  s.unshot_power = residual_power(patches, in, direct, b);
-  while (s.unshot_power > target && s.iterations < options.max_iterations) {
+template <typename V>
+Outcome gather(const Problem<V>& pb, double input_power, const SolveOptions& options, const SolveObserver& observer,
+               Progress& progress, std::vector<V>& b, std::vector<V>& unshot) {
+  const size_t n = pb.size();
+  Incoming in = transpose(pb.patches, pb.transport);
+  std::vector<V> next(n);
+  const double target = options.tolerance * input_power;
+  Outcome out;
+  out.unshot_power = residual_power(pb, in, b);
+  while (out.unshot_power > target && out.iterations < options.max_iterations) {
     for (size_t q = 0; q < n; ++q) {
-      Rgb h = direct[q];
+      V h = pb.direct[q];
       for (uint64_t k = in.start[q]; k < in.start[q + 1]; ++k) h += b[in.source[k]] * in.weight[k];
       // Gauss-Seidel uses each new value at once; Jacobi only after the sweep.
-      (options.solver == Solver::GaussSeidel ? b : next)[q] = patches.reflectance[q] * h;
+      (options.solver == Solver::GaussSeidel ? b : next)[q] = pb.reflectance[q] * h;
     }
     if (options.solver == Solver::Jacobi) b.swap(next);
-    ++s.iterations;
-    s.unshot_power = residual_power(patches, in, direct, b);
-    if (observer.every > 0 && s.iterations % observer.every == 0) {
-      residual_per_patch(patches, in, direct, b, unshot);
-      show(patches, options, observer, s, unshot);
+    ++out.iterations;
+    out.unshot_power = residual_power(pb, in, b);
+    if (observer.every > 0 && out.iterations % observer.every == 0) {
+      residual_per_patch(pb, in, b, unshot);
+      show(pb, options, observer, out.iterations, b, unshot);
     }
     progress.advance(0);
   }
-  residual_per_patch(patches, in, direct, b, unshot);
+  residual_per_patch(pb, in, b, unshot);
+  return out;
+}
+
+// Powers are in V's own units until the end, where `colour` turns them into lm (mean of RGB).
+template <typename V>
+void solve(const Problem<V>& pb, const SolveOptions& options, Progress& progress, const SolveObserver& observer,
+           RadiositySolution& s) {
+  const size_t n = pb.size();
+  double input_power = 0;
+  for (size_t p = 0; p < n; ++p) input_power += mean_power(pb.direct[p], pb.area(p));
+  std::vector<V> exitance(n), unshot(n);
+  Outcome out = options.solver == Solver::Shooting
+                    ? shoot(pb, input_power, options, observer, progress, exitance, unshot)
+                    : gather(pb, input_power, options, observer, progress, exitance, unshot);
+  const Rgb colour = options.one_channel_colour;
+  const double to_lumens = channels(V{}) == 1 ? mean(colour) : 1.0;
+  s.iterations = out.iterations;
+  s.channels = channels(V{});
+  s.input_power = input_power * to_lumens;
+  s.unshot_power = out.unshot_power * to_lumens;
+  s.relative_unshot = input_power > 0 ? out.unshot_power / input_power : 0;
+  s.converged = out.unshot_power <= options.tolerance * input_power;
+  if (options.ambient_term && n > 0) {
+    V ambient = ambient_exitance(pb, unshot);
+    for (size_t p = 0; p < n; ++p) exitance[p] += pb.reflectance[p] * ambient;
+    s.ambient = as_rgb(ambient, colour);
+  }
+  s.exitance = as_rgb(exitance, colour);
 }
 
 }  // namespace
@@ -179,18 +247,20 @@ RadiositySolution solve_radiosity(const Patches& patches, const PatchTransport& 
                                   const SolveObserver& observer) {
   const size_t n = patches.size();
   RadiositySolution s;
-  s.exitance.assign(n, Rgb{});
-  for (size_t p = 0; p < n; ++p) s.input_power += mean_power(direct[p], patches.area[p]);
-  std::vector<Rgb> unshot(n);
   progress.begin("radiosity", 1);
-  if (options.solver == Solver::Shooting) shoot(patches, transport, direct, options, observer, progress, s, unshot);
-  else gather(patches, transport, direct, options, observer, progress, s, unshot);
-  s.relative_unshot = s.input_power > 0 ? s.unshot_power / s.input_power : 0;
-  s.converged = s.unshot_power <= options.tolerance * s.input_power;
-
-  if (options.ambient_term && n > 0) {
-    s.ambient = ambient_exitance(patches, unshot);
-    for (size_t p = 0; p < n; ++p) s.exitance[p] += patches.reflectance[p] * s.ambient;
+  const Rgb colour = options.one_channel_colour;
+  if (max_component(colour) > 0) {
+    // Grey reflectance and light of one colour: every channel is the colour times one solve. The
+    // light is read in the colour's largest channel, where the colour is exactly 1.
+    int c = colour.x == 1 ? 0 : (colour.y == 1 ? 1 : 2);
+    Problem<float> pb{patches, transport, std::vector<float>(n), std::vector<float>(n)};
+    for (size_t p = 0; p < n; ++p) {
+      pb.reflectance[p] = patches.reflectance[p].x;
+      pb.direct[p] = direct[p][c];
+    }
+    solve(pb, options, progress, observer, s);
+  } else {
+    solve(Problem<Rgb>{patches, transport, patches.reflectance, direct}, options, progress, observer, s);
   }
   progress.end();
   return s;

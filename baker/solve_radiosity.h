@@ -24,11 +24,15 @@ struct SolveOptions {
   // A guard against a solve that cannot converge (it never should with reflectance < 1); reaching
   // it is reported as non-convergence, not passed off as a result.
   size_t max_iterations = 50'000'000;
+  // Set from the effect plan: every reflectance is grey and all direct light has this colour
+  // (largest component exactly 1), so one channel is solved and scaled by it. Zero: three channels.
+  Rgb one_channel_colour{0, 0, 0};
 };
 
 struct RadiositySolution {
   std::vector<Rgb> exitance;   // reflected exitance per patch, lm/m2 (emission not included)
   size_t iterations = 0;       // shots, or sweeps for the gathering solvers
+  int channels = 3;            // solved: 1 when the plan found grey materials under one light colour
   double unshot_power = 0;     // lm (mean of the RGB channels) still to be distributed
   double input_power = 0;      // lm (mean of the RGB channels) the direct light brings in
   double relative_unshot = 0;  // unshot_power / input_power

@@ -130,6 +130,10 @@ bake options:
   --emission-scale X      multiply glTF emission before reading it as cd/m2 (default 1; 683 for
                           Blender's exporter, which converts lamps to candela but not emission)
   --no-ambient            leave out the ambient estimate of the light still unshot
+  --direct-only           direct light only: no light between surfaces
+  --simulate-everything   skip nothing the effect plan would skip (one colour channel, no
+                          shadow rays in a convex room, culled lights...): the reference the
+                          planned bake is checked against
   --debug-dumps           also write OUTDIR/debug/*.exr: light by source, material, normals,
                           sample flags and patch layout, undilated
   --quiet                 no progress and no warnings on stderr
@@ -328,6 +332,8 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
       {"--quiet", [&] { b.quiet = true; }},
       {"--debug-dumps", [&] { b.debug_dumps = true; }},
       {"--no-ambient", [&] { b.bake.solve.ambient_term = false; }},
+      {"--direct-only", [&] { b.bake.plan.direct_only = true; }},
+      {"--simulate-everything", [&] { b.bake.plan.simulate_everything = true; }},
   };
   atlas_options(b.atlas, with_value, flags);
   // The preset goes first wherever it stands, so options given with it override it.
@@ -348,6 +354,8 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
   }
   if (b.input.empty()) throw UsageError("missing input scene (radbake bake SCENE.gltf -o OUTDIR)");
   if (b.output.empty()) throw UsageError("missing -o OUTDIR");
+  if (b.bake.plan.direct_only && b.bake.plan.simulate_everything)
+    throw UsageError("--direct-only and --simulate-everything contradict each other");
 
   // The report lists every option with the value the bake used, read back from the structs so
   // the listing cannot drift from the defaults.
@@ -380,6 +388,8 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
       {"png-scale", b.png_scale > 0 ? number(b.png_scale) : "auto"},
       {"emission-scale", number(b.bake.emission_scale)},
       {"ambient", b.bake.solve.ambient_term ? "yes" : "no"},
+      {"direct-only", b.bake.plan.direct_only ? "yes" : "no"},
+      {"simulate-everything", b.bake.plan.simulate_everything ? "yes" : "no"},
       {"rotate-charts", b.atlas.rotate_charts ? "yes" : "no"},
       {"fit-page", b.atlas.fit_one_page ? "yes" : "no"},
       {"lightmap-uvs", b.atlas.input_uvs == InputUvPolicy::KeepValid ? "keep-valid"

@@ -74,6 +74,11 @@ int run_bake(const radbake::BakeCommand& cmd) {
   auto t = std::chrono::steady_clock::now();
   LoadedScene loaded = load_gltf(cmd.input);
   run.io_times.push_back({"load", seconds_since(t)});
+  // Planned before anything is written or unwrapped, so a scene with no light fails at once.
+  const EffectPlan plan = plan_effects(loaded.scene, cmd.bake.plan);
+  if (!cmd.quiet)
+    for (const PlanDecision& d : plan.decisions)
+      std::fprintf(stderr, "radbake: plan: %s: %s (%s)\n", d.effect.c_str(), d.choice.c_str(), d.reason.c_str());
   StagedFolder folder(cmd.output);
 
   t = std::chrono::steady_clock::now();
@@ -86,13 +91,18 @@ int run_bake(const radbake::BakeCommand& cmd) {
   const std::string name = std::filesystem::path(cmd.input).stem().string();
   PreviewWriter previews(folder.path(), name, cmd.quiet);
   BakeResult result = bake(
-      loaded.scene, atlas, options,
+      loaded.scene, atlas, options, plan,
       [&](const std::string& stage, double fraction) {
         display.update(stage, fraction);
         return !interrupted.load();
       },
       [&](const std::vector<LightmapPage>& pages, size_t iteration) { previews.write(pages, iteration); });
   display.finish();
+  if (!cmd.quiet)
+    for (size_t k = plan.decisions.size(); k < result.report.plan.size(); ++k) {
+      const PlanDecision& d = result.report.plan[k];
+      std::fprintf(stderr, "radbake: %s: %s (%s)\n", d.effect.c_str(), d.choice.c_str(), d.reason.c_str());
+    }
 
   t = std::chrono::steady_clock::now();
   const bool irradiance = cmd.bake.store == StoredQuantity::Irradiance;
@@ -119,9 +129,12 @@ int run_bake(const radbake::BakeCommand& cmd) {
 
   if (!cmd.quiet)
     for (const std::string& w : warnings) std::fprintf(stderr, "radbake: warning: %s\n", w.c_str());
-  std::printf("radbake: wrote %s/%s (%zu page%s, %zu texels, energy balance %.3f%%, %.1f s)\n", cmd.output.c_str(),
+  char balance[64] = "energy balance not measured";
+  if (result.report.balance.measured)
+    std::snprintf(balance, sizeof balance, "energy balance %.3f%%", 100.0 * result.report.balance.relative_error);
+  std::printf("radbake: wrote %s/%s (%zu page%s, %zu texels, %s, %.1f s)\n", cmd.output.c_str(),
               gltf.gltf_file.c_str(), result.pages.size(), result.pages.size() == 1 ? "" : "s",
-              result.report.valid_elements, 100.0 * result.report.balance.relative_error, run.total_seconds);
+              result.report.valid_elements, balance, run.total_seconds);
   return 0;
 }
 

@@ -333,6 +333,30 @@ class SceneBuilder {
     }
   }
 
+  // What the material asks for that diffuse radiosity leaves out, each only where it has an effect
+  // (a factor of zero switches it off). The metallic part is judged by the plan, which sees the
+  // resolved factor.
+  static std::vector<std::string> unsimulated_features(const tinygltf::Material& in) {
+    std::vector<std::string> out;
+    auto active = [&](const char* extension, const char* factor, double fallback) {
+      auto it = in.extensions.find(extension);
+      return it != in.extensions.end() && (factor == nullptr || number(it->second, factor, fallback) > 0);
+    };
+    if (active("KHR_materials_transmission", "transmissionFactor", 0)) out.push_back("transmission (KHR_materials_transmission)");
+    if (active("KHR_materials_diffuse_transmission", "diffuseTransmissionFactor", 0))
+      out.push_back("diffuse transmission (KHR_materials_diffuse_transmission)");
+    if (active("KHR_materials_volume", "thicknessFactor", 0)) out.push_back("volume (KHR_materials_volume)");
+    if (active("KHR_materials_specular", "specularFactor", 1)) out.push_back("specular (KHR_materials_specular)");
+    if (active("KHR_materials_clearcoat", "clearcoatFactor", 0)) out.push_back("clearcoat (KHR_materials_clearcoat)");
+    if (active("KHR_materials_sheen", nullptr, 0)) out.push_back("sheen (KHR_materials_sheen)");
+    if (active("KHR_materials_iridescence", "iridescenceFactor", 0)) out.push_back("iridescence (KHR_materials_iridescence)");
+    if (active("KHR_materials_pbrSpecularGlossiness", nullptr, 0))
+      out.push_back("specular-glossiness (KHR_materials_pbrSpecularGlossiness)");
+    if (in.alphaMode == "BLEND") out.push_back("transparency (alphaMode BLEND)");
+    if (in.alphaMode == "MASK") out.push_back("cut-outs (alphaMode MASK)");
+    return out;
+  }
+
   void convert_materials() {
     for (const tinygltf::Material& in : model_.materials) {
       Material m;
@@ -352,6 +376,7 @@ class SceneBuilder {
       auto strength = in.extensions.find("KHR_materials_emissive_strength");
       if (strength != in.extensions.end()) m.emissive_strength = float(number(strength->second, "emissiveStrength", 1.0));
       m.double_sided = in.doubleSided;
+      m.unsimulated = unsimulated_features(in);
       std::string name = in.name.empty() ? "a material" : "material '" + in.name + "'";
       if (!is_finite(m.base_color) || !is_finite(m.emissive) || !std::isfinite(m.emissive_strength) ||
           !std::isfinite(m.metallic) || std::min({m.emissive.x, m.emissive.y, m.emissive.z, m.emissive_strength}) < 0)

@@ -24,6 +24,17 @@ void write_report(const std::string& path, const RunInfo& run, const Scene& scen
   json subdivision = json::array();
   for (const SubdivisionRound& r : bake.subdivision_rounds)
     subdivision.push_back({{"patches", r.patches}, {"split_after_solve", r.split}});
+  json plan = json::array();
+  for (const PlanDecision& d : bake.plan) plan.push_back({{"effect", d.effect}, {"choice", d.choice}, {"reason", d.reason}});
+  json balance = {{"measured", bake.balance.measured}};
+  if (bake.balance.measured)
+    balance.update({{"emitted_lm", bake.balance.emitted}, {"absorbed_lm", bake.balance.absorbed},
+                    {"escaped_lm", bake.balance.escaped}, {"lost_lm", bake.balance.lost},
+                    {"relative_error", bake.balance.relative_error},
+                    {"note", "mean of RGB channels; emitted counts emitting surfaces and what punctual "
+                             "lights deliver onto surfaces; lost is light striking back faces"}});
+  else
+    balance["note"] = "the plan skipped interreflection, so no ray measured the light that escapes";
   const SceneSummary& s = scene.summary;
   json report = {
       {"generator", "radbake"},
@@ -32,6 +43,7 @@ void write_report(const std::string& path, const RunInfo& run, const Scene& scen
                  {"triangles", s.triangles}, {"materials", s.materials}, {"textures", s.textures},
                  {"lights", s.lights}}},
       {"options", options},
+      {"plan", plan},
       {"atlas", {{"texel_density_per_m", atlas.texel_density}, {"requested_density_per_m", atlas.requested_density},
                  {"density_lowered_to_fit_one_page", atlas.density_lowered}, {"charts", atlas.chart_count},
                  {"meshes_with_kept_uvs", kept}, {"pages", pages}, {"utilisation", atlas.stats.utilisation},
@@ -41,21 +53,19 @@ void write_report(const std::string& path, const RunInfo& run, const Scene& scen
                  {"padding_violations", atlas.stats.padding_violations}}},
       {"counts", {{"page_texels", bake.page_texels}, {"elements", bake.elements},
                   {"valid_elements", bake.valid_elements}, {"buried_elements", bake.buried_elements},
-                  {"moved_samples", bake.moved_samples}, {"patches", bake.patches},
+                  {"moved_samples", bake.moved_samples}, {"filtered_texels", bake.filtered_texels},
+                  {"patches", bake.patches},
                   {"patch_block_texels", bake.patch_block_size}, {"rays", bake.rays},
                   {"gather_rays_lost_to_back_faces", bake.gather_back_face_fraction}}},
       {"subdivision", subdivision},
       {"seconds", stages},
       {"total_seconds", run.total_seconds},
       {"peak_memory_bytes", run.peak_memory_bytes},
-      {"solver", {{"iterations", bake.solver_iterations}, {"unshot_relative", bake.unshot_relative},
+      {"solver", {{"iterations", bake.solver_iterations}, {"channels", bake.solved_channels},
+                  {"unshot_relative", bake.unshot_relative},
                   {"converged", bake.converged},
                   {"ambient_lm_per_m2", {bake.ambient.x, bake.ambient.y, bake.ambient.z}}}},
-      {"energy_balance", {{"emitted_lm", bake.balance.emitted}, {"absorbed_lm", bake.balance.absorbed},
-                          {"escaped_lm", bake.balance.escaped}, {"lost_lm", bake.balance.lost},
-                          {"relative_error", bake.balance.relative_error},
-                          {"note", "mean of RGB channels; emitted counts emitting surfaces and what punctual "
-                                   "lights deliver onto surfaces; lost is light striking back faces"}}},
+      {"energy_balance", balance},
       {"lightmaps", {{"quantity", lightmaps.quantity}, {"unit", lightmaps.unit},
                      {"png_intensity", lightmaps.png_scale}}},
       {"warnings", warnings},

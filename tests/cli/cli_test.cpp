@@ -117,6 +117,31 @@ TEST(Cli, BakeWritesTheFolderAndReportsProgressAsPlainLines) {
   EXPECT_EQ(leftovers(parent), 0u);
 }
 
+TEST(Cli, ThePlanIsPrintedAndReported) {
+  std::string parent = test::fresh_folder("cli_plan");
+  Outcome r = radbake("bake " + fixture("lit_room.glb") + " -o " + parent + "/out --max-page-size 64");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("radbake: plan: interreflection: solved"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("radbake: interreflection: stopped after"), std::string::npos) << r.err;
+  nlohmann::json report = nlohmann::json::parse(slurp(parent + "/out/report.json"));
+  ASSERT_TRUE(report["plan"].is_array());
+  EXPECT_EQ(report["plan"][0]["effect"], "interreflection");
+  EXPECT_FALSE(report["plan"][0]["reason"].get<std::string>().empty());
+  EXPECT_EQ(report["plan"].back()["choice"].get<std::string>().find("stopped after"), 0u);
+
+  r = radbake("bake " + fixture("lit_room.glb") + " -o " + parent + "/out --max-page-size 64 --direct-only");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("radbake: plan: interreflection: skipped (asked for direct light only)"), std::string::npos);
+  EXPECT_NE(r.out.find("energy balance not measured"), std::string::npos) << r.out;
+  report = nlohmann::json::parse(slurp(parent + "/out/report.json"));
+  EXPECT_FALSE(report["energy_balance"]["measured"].get<bool>());
+  EXPECT_EQ(report["solver"]["channels"], 0);
+
+  r = radbake("bake " + fixture("lit_room.glb") + " -o " + parent + "/out --direct-only --simulate-everything");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("contradict"), std::string::npos) << r.err;
+}
+
 TEST(Cli, QualityPresetSetsTheRayCountsAndGivenOptionsOverrideIt) {
   std::string parent = test::fresh_folder("cli_quality");
   // The preset applies first wherever it stands on the command line.

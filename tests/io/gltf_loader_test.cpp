@@ -146,6 +146,18 @@ TEST(GltfLoader, MaterialTextureTransformEmissionAndSpotLightAreRead) {
   EXPECT_NEAR(spot.direction.y, -1, 1e-6);
 }
 
+TEST(GltfLoader, MaterialFeaturesDiffuseRadiosityLeavesOutAreNamed) {
+  const std::string material = R"({"alphaMode": "BLEND", "extensions": {
+      "KHR_materials_transmission": {"transmissionFactor": 0.9}, "KHR_materials_volume": {"thicknessFactor": 0.1},
+      "KHR_materials_specular": {"specularFactor": 0.5}, "KHR_materials_clearcoat": {"clearcoatFactor": 0}}})";
+  Scene s = load_gltf(test::write_text_file("glass.gltf", one_triangle_gltf(material, ""))).scene;
+  ASSERT_EQ(s.materials.size(), 1u);
+  // A clearcoat factor of zero switches the clearcoat off: nothing to warn about.
+  EXPECT_EQ(s.materials[0].unsimulated,
+            (std::vector<std::string>{"transmission (KHR_materials_transmission)", "volume (KHR_materials_volume)",
+                                      "specular (KHR_materials_specular)", "transparency (alphaMode BLEND)"}));
+}
+
 TEST(GltfLoader, TexturedAlbedoChangesTheBake) {
   // A red-textured floor tints the ceiling it lights; a white one does not.
   auto ceiling_red_over_green = [](const char* file) {
