@@ -49,24 +49,8 @@ const PlanDecision* decision(const std::vector<PlanDecision>& plan, const std::s
   return nullptr;
 }
 
-// A closed 2 m room, grey walls, a white point light in the middle: a convex enclosure.
-Scene lit_room(float reflectance = 0.6f, Rgb light_colour = {1, 1, 1}) {
-  Scene scene;
-  test::add_box(scene, {0, 0, 0}, {2, 2, 2}, true, test::add_material(scene, {reflectance, reflectance, reflectance}));
-  Light bulb;
-  bulb.intensity = 50;
-  bulb.color = light_colour;
-  bulb.position = {1.1f, 1.3f, 0.9f};
-  scene.lights.push_back(bulb);
-  return scene;
-}
-
-// The room with a block standing in it: surfaces hide each other now.
-Scene room_with_block(float reflectance = 0.6f, Rgb light_colour = {1, 1, 1}) {
-  Scene scene = lit_room(reflectance, light_colour);
-  test::add_box(scene, {0.3f, 0, 0.3f}, {0.8f, 0.6f, 0.8f}, false, scene.instances[0].material, "block");
-  return scene;
-}
+Scene lit_room(float reflectance = 0.6f, Rgb light_colour = {1, 1, 1}) { return test::lit_room(reflectance, light_colour, false); }
+Scene room_with_block(float reflectance = 0.6f, Rgb light_colour = {1, 1, 1}) { return test::lit_room(reflectance, light_colour, true); }
 
 TEST(Plan, NothingEmittingIsAnInputError) {
   Scene scene = lit_room();
@@ -181,20 +165,7 @@ TEST(Plan, UntexturedScenesReadEachMaterialOnceAndMatchTheBoxFilter) {
 }
 
 TEST(Plan, LightsThatCannotReachASurfaceAreCulledBeforeShadowRays) {
-  Scene scene;
-  int grey = test::add_material(scene, {0.5f, 0.5f, 0.5f});
-  test::add_quad(scene, {0, 0, 3}, {3, 0, 0}, {0, 0, -3}, grey, "floor");
-  test::add_box(scene, {1, 0, 1}, {1.6f, 0.8f, 1.6f}, false, grey, "block");
-  Light lamp;  // reaches the floor
-  lamp.intensity = 40;
-  lamp.position = {2.2f, 1.5f, 2.2f};
-  Light short_range = lamp;  // 3 m up with a 1 m range
-  short_range.position = {1.5f, 3, 1.5f};
-  short_range.range = 1;
-  Light upward = lamp;  // a spot aimed at the sky
-  upward.type = LightType::Spot;
-  upward.direction = {0, 1, 0};
-  scene.lights = {lamp, short_range, upward};
+  Scene scene = test::floor_with_lights_out_of_reach();
   EffectPlan plan = plan_effects(scene);
   EXPECT_EQ(plan.light_traced, (std::vector<uint8_t>{1, 0, 0}));
   ASSERT_NE(decision(plan.decisions, "light #1"), nullptr);
@@ -209,11 +180,7 @@ TEST(Plan, LightsThatCannotReachASurfaceAreCulledBeforeShadowRays) {
 }
 
 TEST(Plan, ConvexEnclosureSkipsShadowRaysAndMatchesTheTracedBake) {
-  Scene scene = lit_room();
-  const int white = scene.instances[0].material, lamp = test::add_material(scene, {0, 0, 0}, {1, 1, 1}, 300);
-  scene.instances.clear();
-  const int faces[6] = {white, white, white, lamp, white, white};  // the ceiling glows
-  test::add_box(scene, {0, 0, 0}, {2, 2, 2}, true, faces, "room");
+  Scene scene = test::glowing_ceiling_room();
   EffectPlan plan = plan_effects(scene);
   EXPECT_FALSE(plan.shadow_rays);
   EffectPlan traced = plan;

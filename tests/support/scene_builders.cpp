@@ -59,6 +59,46 @@ void add_box(Scene& scene, Vec3 lo, Vec3 hi, bool inward, int material, const st
   add_box(scene, lo, hi, inward, m, name);
 }
 
+Scene lit_room(float reflectance, Rgb light_colour, bool with_block) {
+  Scene scene;
+  int grey = add_material(scene, {reflectance, reflectance, reflectance});
+  add_box(scene, {0, 0, 0}, {2, 2, 2}, true, grey, "room");
+  if (with_block) add_box(scene, {0.3f, 0, 0.3f}, {0.8f, 0.6f, 0.8f}, false, grey, "block");
+  Light bulb;
+  bulb.intensity = 50;
+  bulb.color = light_colour;
+  bulb.position = {1.1f, 1.3f, 0.9f};
+  scene.lights.push_back(bulb);
+  return scene;
+}
+
+Scene glowing_ceiling_room() {
+  Scene scene = lit_room(0.6f, {1, 1, 1}, false);
+  const int grey = scene.instances[0].material, lamp = add_material(scene, {0, 0, 0}, {1, 1, 1}, 300);
+  scene.instances.clear();
+  const int faces[6] = {grey, grey, grey, lamp, grey, grey};
+  add_box(scene, {0, 0, 0}, {2, 2, 2}, true, faces, "room");
+  return scene;
+}
+
+Scene floor_with_lights_out_of_reach() {
+  Scene scene;
+  int grey = add_material(scene, {0.5f, 0.5f, 0.5f});
+  add_quad(scene, {0, 0, 3}, {3, 0, 0}, {0, 0, -3}, grey, "floor");
+  add_box(scene, {1, 0, 1}, {1.6f, 0.8f, 1.6f}, false, grey, "block");
+  Light lamp;
+  lamp.intensity = 40;
+  lamp.position = {2.2f, 1.5f, 2.2f};
+  Light short_range = lamp;
+  short_range.position = {1.5f, 3, 1.5f};
+  short_range.range = 1;
+  Light upward = lamp;
+  upward.type = LightType::Spot;
+  upward.direction = {0, 1, 0};
+  scene.lights = {lamp, short_range, upward};
+  return scene;
+}
+
 Atlas unwrap(const Scene& scene, const AtlasOptions& options) { return ensure_lightmap_uvs(mesh_views(scene), options); }
 
 MeshInstance bumpy_torus(int rings, int segments) {

@@ -22,6 +22,17 @@ void add_quad(Scene& scene, Vec3 corner, Vec3 u, Vec3 v, int material, const std
 void add_box(Scene& scene, Vec3 lo, Vec3 hi, bool inward, const int (&materials)[6], const std::string& name = "box");
 void add_box(Scene& scene, Vec3 lo, Vec3 hi, bool inward, int material, const std::string& name = "box");
 
+// A closed 2 m room of grey walls with a point light of 50 cd in it, a convex enclosure; with a
+// block (0.5 x 0.6 x 0.5 m) standing in it, surfaces hide each other.
+Scene lit_room(float reflectance, Rgb light_colour, bool with_block);
+
+// The closed room whose ceiling glows (300 cd/m2), with the point light too: still convex.
+Scene glowing_ceiling_room();
+
+// A 3 m floor with a block on it, one point light that lights them, one 3 m above with a 1 m
+// range, and a spot aimed at the sky: the last two reach no surface.
+Scene floor_with_lights_out_of_reach();
+
 Atlas unwrap(const Scene& scene, const AtlasOptions& options);
 
 // A dense curved surface: a torus (major radius 1 m) with bumps, `rings` x `segments` quads
