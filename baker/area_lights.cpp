@@ -119,17 +119,21 @@ std::vector<Rgb> emitter_irradiance(const Elements& e, const Surface& surface, c
         Rgb visible{};
         for (int j = 0; j < rays; ++j) {
           Vec3 y = polygon_point(clipped[k].data(), clipped_count[k], cmj_sample(uint32_t(j), uint32_t(rays), target_pattern));
-          Vec3 origin = footprint_point(e, surface, i, cmj_sample(uint32_t(j), uint32_t(rays), origin_pattern)) + ng * e.offset[i];
+          const Vec3 from = footprint_point(e, surface, i, cmj_sample(uint32_t(j), uint32_t(rays), origin_pattern));
+          const Vec3 origin = from + ng * e.offset[i];
           // The ray ends just off the emitter, on the receiver's side: stopping a fraction short
           // along the ray is not enough at grazing angles, where that point is still within
           // rounding of the emitter's plane and the emitter would occlude itself.
           Vec3 target = y + em.normal * std::max(e.offset[i], 1e-5f * length(y - origin));
+          // Nor may it end lower over the receiver's plane than the ray starts: a target in that
+          // plane (an emitter meeting the receiver at an edge, or a distant one that merely lies
+          // in the plane extended) would have the ray graze the receiver, or slip between a wall
+          // and the surface it stands on, past every wall in the way.
+          const float lift = e.offset[i] - dot(target - from, ng);
+          if (lift > 0) target += ng * lift;
           Vec3 d = target - origin;
           float dist = length(d);
-          // A target within the ray offset of the receiver's own plane (an emitter meeting it at
-          // an edge) is in plain view; a ray there would only graze the receiver itself.
-          bool grazing = !(dist > 0) || dot(d, ng) <= 0;
-          if (!grazing && options.shadow_rays && tracer.occluded(origin, d / dist, 0.0f, dist)) continue;
+          if (dist > 0 && options.shadow_rays && tracer.occluded(origin, d / dist, 0.0f, dist)) continue;
           visible += em.uniform ? em.emission : materials.emission(em.triangle, triangle_bary(em, y), 1.0f);
         }
         h += visible * float(factor[k] / rays);

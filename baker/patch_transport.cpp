@@ -104,6 +104,30 @@ void balance_reciprocity(const Patches& patches, std::vector<std::vector<std::pa
 
 }  // namespace
 
+Enclosures find_enclosures(const PatchTransport& t) {
+  const size_t n = t.row_start.empty() ? 0 : t.row_start.size() - 1;
+  std::vector<uint32_t> parent(n);
+  for (size_t p = 0; p < n; ++p) parent[p] = uint32_t(p);
+  auto find = [&](uint32_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  for (size_t p = 0; p < n; ++p)
+    for (uint64_t k = t.row_start[p]; k < t.row_start[p + 1]; ++k) {
+      uint32_t a = find(uint32_t(p)), b = find(t.target[k]);
+      parent[std::max(a, b)] = std::min(a, b);
+    }
+  Enclosures out;
+  out.of_patch.resize(n);
+  std::vector<uint32_t> number(n, UINT32_MAX);
+  for (size_t p = 0; p < n; ++p) {
+    uint32_t root = find(uint32_t(p));
+    if (number[root] == UINT32_MAX) number[root] = uint32_t(out.count++);
+    out.of_patch[p] = number[root];
+  }
+  return out;
+}
+
 std::vector<uint32_t> all_patches(size_t n) {
   std::vector<uint32_t> which(n);
   for (size_t p = 0; p < n; ++p) which[p] = uint32_t(p);

@@ -26,6 +26,15 @@ struct PatchTransport {
   std::vector<uint32_t> rays;         // per patch
 };
 
+// Groups of patches that exchange light, directly or through one another (connected through the
+// rows): rooms closed off from each other are separate enclosures. Every patch is in exactly one.
+struct Enclosures {
+  std::vector<uint32_t> of_patch;  // enclosure of each patch, numbered from 0 by lowest patch
+  size_t count = 0;
+};
+
+Enclosures find_enclosures(const PatchTransport& transport);
+
 // Rows F(p -> q) as measured, before reciprocity: what adaptive subdivision keeps between rounds.
 struct MeasuredRows {
   std::vector<std::vector<std::pair<uint32_t, float>>> rows;  // per patch, by target patch

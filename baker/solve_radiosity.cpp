@@ -28,6 +28,7 @@ template <typename V>
 struct Problem {
   const Patches& patches;
   const PatchTransport& transport;
+  const Enclosures& enclosures;
   std::vector<V> reflectance, direct;
   size_t size() const { return patches.size(); }
   float area(size_t p) const { return patches.area[p]; }
@@ -66,30 +67,62 @@ V residual(const Problem<V>& pb, const Incoming& in, const std::vector<V>& b, si
   return pb.reflectance[q] * h - b[q];
 }
 
-// Residual of the current estimate: what each patch would still change by, as power.
+// Residual of the current estimate: what each patch would still change by, as power, summed per
+// enclosure into `per_enclosure`; returns the total.
 template <typename V>
-double residual_power(const Problem<V>& pb, const Incoming& in, const std::vector<V>& b) {
+double residual_power(const Problem<V>& pb, const Incoming& in, const std::vector<V>& b,
+                      std::vector<double>& per_enclosure) {
+  per_enclosure.assign(pb.enclosures.count, 0.0);
   double total = 0;
-  for (size_t q = 0; q < pb.size(); ++q) total += mean_abs(residual(pb, in, b, q)) * pb.area(q);
+  for (size_t q = 0; q < pb.size(); ++q) {
+    double power = mean_abs(residual(pb, in, b, q)) * pb.area(q);
+    per_enclosure[pb.enclosures.of_patch[q]] += power;
+    total += power;
+  }
   return total;
 }
 
-// Cohen et al. 1988: the unshot light, spread evenly and bounced by the mean reflectance.
+// Enclosures whose unshot (or residual) power is still above the tolerance times the power the
+// direct light brings into them. Each is held to its own input: a dim room beside a bright one
+// is solved as finely as if it were alone.
+size_t open_enclosures(const std::vector<double>& unshot, const std::vector<double>& input, double tolerance) {
+  size_t open = 0;
+  for (size_t e = 0; e < unshot.size(); ++e) open += unshot[e] > tolerance * input[e];
+  return open;
+}
+
+// Cohen et al. 1988: the unshot light, spread evenly and bounced by the mean reflectance, per
+// enclosure: light left unshot in one room cannot reach another.
 template <typename V>
-V ambient_exitance(const Problem<V>& pb, const std::vector<V>& unshot) {
-  double area = 0;
-  V unshot_power{}, reflected{}, ambient{};
+std::vector<V> ambient_exitance(const Problem<V>& pb, const std::vector<V>& unshot) {
+  struct Sums {
+    double area = 0, unshot_power[3] = {}, reflected[3] = {};
+  };
+  std::vector<Sums> sums(pb.enclosures.count);
   for (size_t p = 0; p < pb.size(); ++p) {
-    area += pb.area(p);
-    unshot_power += unshot[p] * pb.area(p);
-    reflected += pb.reflectance[p] * pb.area(p);
+    Sums& e = sums[pb.enclosures.of_patch[p]];
+    e.area += pb.area(p);
+    V u = unshot[p], rho = pb.reflectance[p];
+    for (int c = 0; c < channels(V{}); ++c) {
+      e.unshot_power[c] += double(channel(u, c)) * pb.area(p);
+      e.reflected[c] += double(channel(rho, c)) * pb.area(p);
+    }
   }
-  if (area <= 0) return ambient;
-  for (int c = 0; c < channels(V{}); ++c) {
-    double rho = std::min(double(channel(reflected, c)) / area, 0.999);
-    channel(ambient, c) = float(double(channel(unshot_power, c)) / area / (1.0 - rho));
+  std::vector<V> ambient(pb.enclosures.count);
+  for (size_t e = 0; e < ambient.size(); ++e) {
+    if (sums[e].area <= 0) continue;
+    for (int c = 0; c < channels(V{}); ++c) {
+      double rho = std::min(sums[e].reflected[c] / sums[e].area, 0.999);
+      channel(ambient[e], c) = float(sums[e].unshot_power[c] / sums[e].area / (1.0 - rho));
+    }
   }
   return ambient;
+}
+
+// Adds the ambient term to `exitance`: each patch reflects its enclosure's ambient light.
+template <typename V>
+void add_ambient(const Problem<V>& pb, const std::vector<V>& ambient, std::vector<V>& exitance) {
+  for (size_t p = 0; p < exitance.size(); ++p) exitance[p] += pb.reflectance[p] * ambient[pb.enclosures.of_patch[p]];
 }
 
 // Values in the caller's Rgb: one channel scales the light colour.
@@ -108,66 +141,70 @@ void show(const Problem<V>& pb, const SolveOptions& options, const SolveObserver
           const std::vector<V>& exitance, const std::vector<V>& unshot) {
   if (observer.every == 0 || iteration % observer.every != 0) return;
   std::vector<V> estimate = exitance;
-  if (options.ambient_term) {
-    V ambient = ambient_exitance(pb, unshot);
-    for (size_t p = 0; p < estimate.size(); ++p) estimate[p] += pb.reflectance[p] * ambient;
-  }
+  if (options.ambient_term) add_ambient(pb, ambient_exitance(pb, unshot), estimate);
   observer.see(as_rgb(estimate, options.one_channel_colour), iteration);
 }
 
 struct Outcome {
   size_t iterations = 0;
   double unshot_power = 0;
+  bool converged = false;  // every enclosure within the tolerance
 };
 
 template <typename V>
-Outcome shoot(const Problem<V>& pb, double input_power, const SolveOptions& options, const SolveObserver& observer,
-              Progress& progress, std::vector<V>& exitance, std::vector<V>& unshot) {
+Outcome shoot(const Problem<V>& pb, const std::vector<double>& input, const SolveOptions& options,
+              const SolveObserver& observer, Progress& progress, std::vector<V>& exitance, std::vector<V>& unshot) {
   const size_t n = pb.size();
   const PatchTransport& t = pb.transport;
-  // Max-heap of unshot power with lazy deletion: an entry is stale when its power is outdated.
+  const Enclosures& enclosures = pb.enclosures;
+  // Max-heap of unshot power relative to the power brought into the patch's enclosure, with lazy
+  // deletion: an entry is stale when its power is outdated.
   using Entry = std::pair<double, uint32_t>;
   std::priority_queue<Entry> heap;
-  std::vector<double> power(n);
-  double total_unshot = 0;
+  std::vector<double> power(n), enclosure_unshot(enclosures.count, 0.0);
+  auto relative = [&](uint32_t p) { return power[p] / input[enclosures.of_patch[p]]; };
   for (size_t p = 0; p < n; ++p) {
     unshot[p] = exitance[p] = pb.reflectance[p] * pb.direct[p];
     power[p] = mean_power(unshot[p], pb.area(p));
-    total_unshot += power[p];
-    heap.push({power[p], uint32_t(p)});
+    enclosure_unshot[enclosures.of_patch[p]] += power[p];
+    if (power[p] > 0) heap.push({relative(uint32_t(p)), uint32_t(p)});
   }
-  const double target = options.tolerance * input_power;
+  auto open = [&](uint32_t e) { return enclosure_unshot[e] > options.tolerance * input[e]; };
+  size_t open_count = open_enclosures(enclosure_unshot, input, options.tolerance);
   Outcome out;
   size_t next_report = 0;
-  while (total_unshot > target && !heap.empty() && out.iterations < options.max_iterations) {
-    auto [pw, p] = heap.top();
+  while (open_count > 0 && !heap.empty() && out.iterations < options.max_iterations) {
+    auto [key, p] = heap.top();
     heap.pop();
-    if (pw != power[p]) continue;
+    const uint32_t e = enclosures.of_patch[p];
+    if (key != relative(p) || !open(e)) continue;  // stale, or its enclosure is done
     V shot = unshot[p] * pb.area(p);  // power leaving p, lm per channel
     unshot[p] = {};
-    total_unshot -= power[p];
+    enclosure_unshot[e] -= power[p];
     power[p] = 0;
     for (uint64_t k = t.row_start[p]; k < t.row_start[p + 1]; ++k) {
-      uint32_t q = t.target[k];
+      uint32_t q = t.target[k];  // in p's enclosure, by definition
       V gain = pb.reflectance[q] * shot * (t.form_factor[k] / pb.area(q));
       exitance[q] += gain;
       unshot[q] += gain;
       double added = mean_power(gain, pb.area(q));
       power[q] += added;
-      total_unshot += added;
-      heap.push({power[q], q});
+      enclosure_unshot[e] += added;
+      heap.push({relative(q), q});
     }
+    open_count -= !open(e);
     ++out.iterations;
     show(pb, options, observer, out.iterations, exitance, unshot);
-    // Now and then: recompute the sum, so floating-point drift stays out of the stopping test,
+    // Now and then: recompute the sums, so floating-point drift stays out of the stopping test,
     // and drop stale heap entries, so the heap stays linear in the patch count.
     if (out.iterations % 4096 == 0 || heap.size() > 8 * n + 1024) {
-      total_unshot = 0;
+      enclosure_unshot.assign(enclosures.count, 0.0);
       heap = {};
       for (size_t q = 0; q < n; ++q) {
-        total_unshot += power[q];
-        if (power[q] > 0) heap.push({power[q], uint32_t(q)});
+        enclosure_unshot[enclosures.of_patch[q]] += power[q];
+        if (power[q] > 0) heap.push({relative(uint32_t(q)), uint32_t(q)});
       }
+      open_count = open_enclosures(enclosure_unshot, input, options.tolerance);
     }
     if (out.iterations >= next_report) {
       progress.advance(0);
@@ -175,6 +212,7 @@ Outcome shoot(const Problem<V>& pb, double input_power, const SolveOptions& opti
     }
   }
   for (double v : power) out.unshot_power += v;
+  out.converged = open_count == 0;
   return out;
 }
 
@@ -185,15 +223,16 @@ void residual_per_patch(const Problem<V>& pb, const Incoming& in, const std::vec
 }
 
 template <typename V>
-Outcome gather(const Problem<V>& pb, double input_power, const SolveOptions& options, const SolveObserver& observer,
-               Progress& progress, std::vector<V>& b, std::vector<V>& unshot) {
+Outcome gather(const Problem<V>& pb, const std::vector<double>& input, const SolveOptions& options,
+               const SolveObserver& observer, Progress& progress, std::vector<V>& b, std::vector<V>& unshot) {
   const size_t n = pb.size();
   Incoming in = transpose(pb.patches, pb.transport);
   std::vector<V> next(n);
-  const double target = options.tolerance * input_power;
+  std::vector<double> residual;
   Outcome out;
-  out.unshot_power = residual_power(pb, in, b);
-  while (out.unshot_power > target && out.iterations < options.max_iterations) {
+  out.unshot_power = residual_power(pb, in, b, residual);
+  size_t open_count = open_enclosures(residual, input, options.tolerance);
+  while (open_count > 0 && out.iterations < options.max_iterations) {
     for (size_t q = 0; q < n; ++q) {
       V h = pb.direct[q];
       for (uint64_t k = in.start[q]; k < in.start[q + 1]; ++k) h += b[in.source[k]] * in.weight[k];
@@ -202,7 +241,8 @@ Outcome gather(const Problem<V>& pb, double input_power, const SolveOptions& opt
     }
     if (options.solver == Solver::Jacobi) b.swap(next);
     ++out.iterations;
-    out.unshot_power = residual_power(pb, in, b);
+    out.unshot_power = residual_power(pb, in, b, residual);
+    open_count = open_enclosures(residual, input, options.tolerance);
     if (observer.every > 0 && out.iterations % observer.every == 0) {
       residual_per_patch(pb, in, b, unshot);
       show(pb, options, observer, out.iterations, b, unshot);
@@ -210,6 +250,7 @@ Outcome gather(const Problem<V>& pb, double input_power, const SolveOptions& opt
     progress.advance(0);
   }
   residual_per_patch(pb, in, b, unshot);
+  out.converged = open_count == 0;
   return out;
 }
 
@@ -218,12 +259,17 @@ template <typename V>
 void solve(const Problem<V>& pb, const SolveOptions& options, Progress& progress, const SolveObserver& observer,
            RadiositySolution& s) {
   const size_t n = pb.size();
+  std::vector<double> input(pb.enclosures.count, 0.0);  // per enclosure
   double input_power = 0;
-  for (size_t p = 0; p < n; ++p) input_power += mean_power(pb.direct[p], pb.area(p));
+  for (size_t p = 0; p < n; ++p) {
+    double power = mean_power(pb.direct[p], pb.area(p));
+    input[pb.enclosures.of_patch[p]] += power;
+    input_power += power;
+  }
   std::vector<V> exitance(n), unshot(n);
   Outcome out = options.solver == Solver::Shooting
-                    ? shoot(pb, input_power, options, observer, progress, exitance, unshot)
-                    : gather(pb, input_power, options, observer, progress, exitance, unshot);
+                    ? shoot(pb, input, options, observer, progress, exitance, unshot)
+                    : gather(pb, input, options, observer, progress, exitance, unshot);
   const Rgb colour = options.one_channel_colour;
   const double to_lumens = channels(V{}) == 1 ? mean(colour) : 1.0;
   s.iterations = out.iterations;
@@ -231,11 +277,17 @@ void solve(const Problem<V>& pb, const SolveOptions& options, Progress& progress
   s.input_power = input_power * to_lumens;
   s.unshot_power = out.unshot_power * to_lumens;
   s.relative_unshot = input_power > 0 ? out.unshot_power / input_power : 0;
-  s.converged = out.unshot_power <= options.tolerance * input_power;
+  s.converged = out.converged;
   if (options.ambient_term && n > 0) {
-    V ambient = ambient_exitance(pb, unshot);
-    for (size_t p = 0; p < n; ++p) exitance[p] += pb.reflectance[p] * ambient;
-    s.ambient = as_rgb(ambient, colour);
+    const std::vector<V> ambient = ambient_exitance(pb, unshot);
+    add_ambient(pb, ambient, exitance);
+    double area = 0;  // the report's ambient: the enclosures' area-weighted mean
+    V weighted{};
+    for (size_t p = 0; p < n; ++p) {
+      area += pb.area(p);
+      weighted += ambient[pb.enclosures.of_patch[p]] * pb.area(p);
+    }
+    if (area > 0) s.ambient = as_rgb(weighted / float(area), colour);
   }
   s.exitance = as_rgb(exitance, colour);
 }
@@ -246,6 +298,7 @@ RadiositySolution solve_radiosity(const Patches& patches, const PatchTransport& 
                                   const std::vector<Rgb>& direct, const SolveOptions& options, Progress& progress,
                                   const SolveObserver& observer) {
   const size_t n = patches.size();
+  const Enclosures enclosures = find_enclosures(transport);
   RadiositySolution s;
   progress.begin("radiosity", 1);
   const Rgb colour = options.one_channel_colour;
@@ -253,14 +306,14 @@ RadiositySolution solve_radiosity(const Patches& patches, const PatchTransport& 
     // Grey reflectance and light of one colour: every channel is the colour times one solve. The
     // light is read in the colour's largest channel, where the colour is exactly 1.
     int c = colour.x == 1 ? 0 : (colour.y == 1 ? 1 : 2);
-    Problem<float> pb{patches, transport, std::vector<float>(n), std::vector<float>(n)};
+    Problem<float> pb{patches, transport, enclosures, std::vector<float>(n), std::vector<float>(n)};
     for (size_t p = 0; p < n; ++p) {
       pb.reflectance[p] = patches.reflectance[p].x;
       pb.direct[p] = direct[p][c];
     }
     solve(pb, options, progress, observer, s);
   } else {
-    solve(Problem<Rgb>{patches, transport, patches.reflectance, direct}, options, progress, observer, s);
+    solve(Problem<Rgb>{patches, transport, enclosures, patches.reflectance, direct}, options, progress, observer, s);
   }
   progress.end();
   return s;

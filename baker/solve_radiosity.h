@@ -2,6 +2,8 @@
 // with D_p the direct irradiance (from lights and emitting surfaces) and F the ray-cast transport.
 // Solved by progressive shooting (Cohen et al. 1988) or by Jacobi / Gauss-Seidel gathering; all
 // stop when the unshot energy falls under a tolerance, never after a fixed number of bounces.
+// Enclosures (patches that exchange light, find_enclosures) are held to the tolerance and given
+// an ambient term each, so a dim room beside a bright one is solved as if it were alone.
 #pragma once
 
 #include <cstddef>
@@ -19,7 +21,7 @@ enum class Solver { Shooting, GaussSeidel, Jacobi };
 
 struct SolveOptions {
   Solver solver = Solver::Shooting;
-  double tolerance = 1e-3;  // stop when unshot power <= tolerance * power brought in by the lights
+  double tolerance = 1e-3;  // stop when, in every enclosure, unshot power <= tolerance * power the lights bring into it
   bool ambient_term = true; // add Cohen's ambient estimate of the light still unshot to the result
   // A guard against a solve that cannot converge (it never should with reflectance < 1); reaching
   // it is reported as non-convergence, not passed off as a result.
@@ -37,7 +39,7 @@ struct RadiositySolution {
   double input_power = 0;      // lm (mean of the RGB channels) the direct light brings in
   double relative_unshot = 0;  // unshot_power / input_power
   bool converged = false;
-  Rgb ambient{};               // lm/m2 added through the ambient term
+  Rgb ambient{};               // lm/m2 added through the ambient term, area-weighted mean over the enclosures
 };
 
 // Sees the progressive estimate every `every` shots (or sweeps): reflected exitance per patch,

@@ -6,25 +6,11 @@
 #include <cmath>
 
 #include "baker/material_sampler.h"
+#include "support/closed_forms.h"
 #include "support/scene_builders.h"
 
 namespace radbake {
 namespace {
-
-double corner_point_to_rectangle(double a, double b, double c) {
-  double A = a / c, B = b / c;
-  return (A / std::sqrt(1 + A * A) * std::atan(B / std::sqrt(1 + A * A)) +
-          B / std::sqrt(1 + B * B) * std::atan(A / std::sqrt(1 + B * B))) /
-         (2 * M_PI);
-}
-
-// Sums the four corner rectangles a point under a rectangle [x0,x1] x [z0,z1] splits it into.
-double point_to_rectangle(double px, double pz, double x0, double x1, double z0, double z1, double h) {
-  double f = 0;
-  for (double w : {x1 - px, px - x0})
-    for (double d : {z1 - pz, pz - z0}) f += corner_point_to_rectangle(w, d, h);
-  return f;
-}
 
 // A 1 m square lamp 1 m above a black floor whose glTF emission, times `emission_scale`, is a
 // luminance of 1000 cd/m2: the floor's irradiance against the closed form.
@@ -44,7 +30,7 @@ void expect_closed_form_under_square_lamp(float emission_in_file, float emission
   for (size_t i = 0; i < e.size(); ++i) {
     if (!e.valid(i) || e.normal[i].y < 0.9f || (i % 97) != 0) continue;
     Vec3 x = e.position[i];
-    double expected = kExitancePerEmissiveUnit * luminance * point_to_rectangle(x.x, x.z, -0.5, 0.5, -0.5, 0.5, 1.0);
+    double expected = kExitancePerEmissiveUnit * luminance * test::point_to_rectangle(x.x, x.z, -0.5, 0.5, -0.5, 0.5, 1.0);
     // 1% of the value under the lamp's centre: the texel averages over its footprint.
     EXPECT_NEAR(b.result.irradiance[i].x, expected, 0.01 * kExitancePerEmissiveUnit * luminance * 0.5)
         << "at " << x.x << ", " << x.z;

@@ -14,30 +14,36 @@ namespace radbake::test {
 
 std::string source_path(const std::string& relative) { return std::string(RADBAKE_SOURCE_DIR) + "/" + relative; }
 
-int add_material(Scene& scene, Rgb base_color, Rgb emissive, float emissive_strength) {
+int add_material(Scene& scene, Rgb base_color, Rgb emissive, float emissive_strength, bool double_sided) {
   Material m;
   m.name = "material " + std::to_string(scene.materials.size());
   m.base_color = base_color;
   m.metallic = 0;
   m.emissive = emissive;
   m.emissive_strength = emissive_strength;
+  m.double_sided = double_sided;
   scene.materials.push_back(m);
   return int(scene.materials.size() - 1);
 }
 
-void add_quad(Scene& scene, Vec3 corner, Vec3 u, Vec3 v, int material, const std::string& name) {
+void add_mesh(Scene& scene, std::vector<Vec3> positions, std::vector<uint32_t> triangles, int material,
+              const std::string& name) {
   MeshInstance inst;
   inst.name = name;
   inst.node = int(scene.instances.size());
   inst.mesh = inst.node;
   inst.primitive = 0;
   inst.material = material;
-  inst.positions = {corner, corner + u, corner + u + v, corner + v};
+  inst.positions = std::move(positions);
+  inst.triangles = std::move(triangles);
+  scene.summary.triangles += inst.triangle_count();
+  scene.instances.push_back(std::move(inst));
+}
+
+void add_quad(Scene& scene, Vec3 corner, Vec3 u, Vec3 v, int material, const std::string& name) {
+  add_mesh(scene, {corner, corner + u, corner + u + v, corner + v}, {0, 1, 2, 0, 2, 3}, material, name);
   Vec3 n = normalize(cross(u, v));
-  inst.normals = {n, n, n, n};
-  inst.triangles = {0, 1, 2, 0, 2, 3};
-  scene.instances.push_back(inst);
-  scene.summary.triangles += 2;
+  scene.instances.back().normals = {n, n, n, n};
 }
 
 void add_box(Scene& scene, Vec3 lo, Vec3 hi, bool inward, const int (&m)[6], const std::string& name) {

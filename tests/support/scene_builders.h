@@ -3,6 +3,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "baker/bake.h"
 #include "baker/scene.h"
@@ -12,7 +13,14 @@ namespace radbake::test {
 
 std::string source_path(const std::string& relative);  // inside the repository
 
-int add_material(Scene& scene, Rgb base_color, Rgb emissive = {0, 0, 0}, float emissive_strength = 1.0f);
+// A dielectric (metallic 0) material; `double_sided` as glTF's doubleSided.
+int add_material(Scene& scene, Rgb base_color, Rgb emissive = {0, 0, 0}, float emissive_strength = 1.0f,
+                 bool double_sided = false);
+
+// A mesh instance from world-space positions and three indices per triangle, without normals (the
+// baker then uses face normals); fronts wind counter-clockwise.
+void add_mesh(Scene& scene, std::vector<Vec3> positions, std::vector<uint32_t> triangles, int material,
+              const std::string& name = "mesh");
 
 // A quad corner, corner + u, corner + u + v, corner + v (two triangles); its front faces u x v.
 void add_quad(Scene& scene, Vec3 corner, Vec3 u, Vec3 v, int material, const std::string& name = "quad");
