@@ -25,6 +25,10 @@ std::vector<Emitter> collect_emitters(const Surface& surface, const MaterialSamp
     Emitter em{t, {surface.corners[3 * t], surface.corners[3 * t + 1], surface.corners[3 * t + 2]},
                surface.normal[t], materials.is_uniform(t), materials.emission(t, {1.0f / 3, 1.0f / 3}, 1.0f)};
     out.push_back(em);
+    if (!surface.double_sided[t]) continue;
+    em.normal = -em.normal;  // glTF double-sided: the back face emits too, as its own emitter
+    std::swap(em.corner[1], em.corner[2]);
+    out.push_back(em);
   }
   return out;
 }

@@ -48,7 +48,9 @@ uint32_t patch_hit(const Elements& elements, const Patches& patches, const Surfa
                    const RayTracer& tracer, Vec3 origin, Vec3 direction, bool& escaped) {
   Hit hit = tracer.intersect(origin, direction, 0.0f, INFINITY);
   escaped = hit.missed();
-  if (escaped || !hit.front) return UINT32_MAX;
+  // A single-sided surface has no back (glTF culls it): light striking there is absorbed. A
+  // double-sided one shows its texel on both faces, so the back reflects that texel's light.
+  if (escaped || (!hit.front && !surface.double_sided[hit.triangle])) return UINT32_MAX;
   int64_t element = element_for_hit(elements, surface, tracer, hit);
   return element < 0 ? UINT32_MAX : patches.patch_of_element[size_t(element)];
 }

@@ -32,7 +32,7 @@ void write_report(const std::string& path, const RunInfo& run, const Scene& scen
                     {"escaped_lm", bake.balance.escaped}, {"lost_lm", bake.balance.lost},
                     {"relative_error", bake.balance.relative_error},
                     {"note", "mean of RGB channels; emitted counts emitting surfaces and what punctual "
-                             "lights deliver onto surfaces; lost is light striking back faces"}});
+                             "lights deliver onto surfaces; lost is light striking back faces of single-sided surfaces"}});
   else
     balance["note"] = "the plan skipped interreflection, so no ray measured the light that escapes";
   const SceneSummary& s = scene.summary;
