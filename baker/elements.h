@@ -20,6 +20,7 @@ enum ElementFlags : uint8_t {
   kBuried = 4,        // the sample sees mostly back faces: it is inside geometry, valued by dilation
   kJoinsRight = 8,    // the element to the right (same chart) is on the same side of all geometry
   kJoinsDown = 16,    // likewise the element below; patches only grow across these joins
+  kFlatTexel = 32,    // one plane of one chart covers the whole texel, whichever triangles it is cut into
 };
 
 struct Elements {
