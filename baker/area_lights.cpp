@@ -33,6 +33,10 @@ std::vector<Emitter> collect_emitters(const Surface& surface, const MaterialSamp
   return out;
 }
 
+// Points per texel at which each emitter's form factor is averaged, stratified 4 x 4: fewer leave
+// percent-level noise on texels that a close emitter's light edge crosses.
+constexpr uint32_t kFormFactorPoints = 16;
+
 // Clips the polygon to the half-space above the plane through x with normal n.
 int clip_to_hemisphere(Vec3 x, Vec3 n, const Vec3* in, int count, Vec3* out) {
   int m = 0;
@@ -45,10 +49,19 @@ int clip_to_hemisphere(Vec3 x, Vec3 n, const Vec3* in, int count, Vec3* out) {
   return m;
 }
 
-// A point of a convex polygon (fanned from vertex 0) for a unit-square sample, uniform by area.
-Vec3 polygon_point(const Vec3* p, int count, Vec2 u) {
+// The part of the emitter above the horizon of point x (unit normal n), as a polygon of up to 4
+// corners; fewer than 3 when the emitter faces away from x or lies below its horizon.
+int visible_part(const Emitter& em, Vec3 x, Vec3 n, Vec3* polygon) {
+  if (dot(x - em.corner[0], em.normal) <= 0) return 0;
+  return clip_to_hemisphere(x, n, em.corner, 3, polygon);
+}
+
+// A point of a convex polygon (fanned from vertex 0) for a unit-square sample, uniform by area;
+// `area` gets the polygon's area.
+Vec3 polygon_point(const Vec3* p, int count, Vec2 u, float* area) {
   float areas[4] = {}, total = 0;
   for (int k = 1; k + 1 < count; ++k) total += areas[k - 1] = length(cross(p[k] - p[0], p[k + 1] - p[0]));
+  *area = 0.5f * total;
   float pick = u.x * total;
   int k = 1;
   while (k + 2 < count && pick > areas[k - 1]) pick -= areas[k - 1], ++k;
@@ -102,28 +115,41 @@ std::vector<Rgb> emitter_irradiance(const Elements& e, const Surface& surface, c
   const std::vector<Emitter> emitters = collect_emitters(surface, materials);
   if (emitters.empty()) return irradiance;
   // Rays are shared out among the emitters by their unoccluded contribution, so a hundred small
-  // emitting triangles cost about what one bright one does.
+  // emitting triangles cost about what one bright one does (at most twice the budget).
   const int budget = 2 * std::max(1, options.area_light_rays);
   progress.begin("area lights", e.size());
   tbb::parallel_for(tbb::blocked_range<size_t>(0, e.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
     std::vector<double> factor(emitters.size());
-    std::vector<std::array<Vec3, 4>> clipped(emitters.size());
-    std::vector<int> clipped_count(emitters.size());
     for (size_t i = r.begin(); i < r.end(); ++i) {
       if (!e.valid(i)) continue;
-      const Vec3 x = e.position[i], n = e.normal[i], ng = surface.normal[e.triangle[i]];
+      const Vec3 n = e.normal[i], ng = surface.normal[e.triangle[i]];
+      Rng rng(seed, Stream::AreaLight, i);
+      // Each emitter's unoccluded form factor is the mean over points spread over the texel, the
+      // same points for every emitter: at the sample point alone, a texel across a sharp edge of
+      // an emitter's light (a lamp close to a wall) would count all or none of it over its whole
+      // area; at points of its own per emitter, the form factors of a closed room's walls would
+      // no longer add up to one.
+      Vec3 points[kFormFactorPoints];
+      const uint32_t point_pattern = rng.next_u32();
+      for (uint32_t m = 0; m < kFormFactorPoints; ++m)
+        points[m] = footprint_point(e, surface, i, cmj_sample(m, kFormFactorPoints, point_pattern));
       double total = 0;
+      int contributing = 0;
       for (size_t k = 0; k < emitters.size(); ++k) {
-        const Emitter& em = emitters[k];
         factor[k] = 0;
-        if (em.triangle == e.triangle[i] || dot(x - em.corner[0], em.normal) <= 0) continue;
-        clipped_count[k] = clip_to_hemisphere(x, n, em.corner, 3, clipped[k].data());
-        if (clipped_count[k] < 3) continue;
-        factor[k] = polygon_form_factor(x, n, clipped[k].data(), clipped_count[k]);
-        total += factor[k] * sum(em.emission);
+        if (emitters[k].triangle == e.triangle[i]) continue;
+        for (const Vec3& x : points) {
+          Vec3 polygon[4];
+          const int corners = visible_part(emitters[k], x, n, polygon);
+          if (corners >= 3) factor[k] += polygon_form_factor(x, n, polygon, corners) / kFormFactorPoints;
+        }
+        total += factor[k] * sum(emitters[k].emission);
+        contributing += factor[k] > 0;
       }
       if (total <= 0) continue;
-      Rng rng(seed, Stream::AreaLight, i);
+      // Every emitter gets at least an even share of the budget: its light may matter far more
+      // than its unoccluded share says (the bright one may be behind a wall).
+      const int least = std::clamp(budget / std::max(1, contributing), 1, options.area_light_rays);
       Rgb h{};
       for (size_t k = 0; k < emitters.size(); ++k) {
         if (factor[k] <= 0) continue;
@@ -133,12 +159,26 @@ std::vector<Rgb> emitter_irradiance(const Elements& e, const Surface& surface, c
           continue;
         }
         double share = factor[k] * sum(em.emission) / total;
-        int rays = std::clamp(int(std::ceil(budget * share)), 1, options.area_light_rays);
+        int rays = std::clamp(int(std::ceil(budget * share)), least, options.area_light_rays);
         uint32_t target_pattern = rng.next_u32(), origin_pattern = rng.next_u32();
-        Rgb visible{};
+        // The seen fraction: shadow rays from points of the texel to points of the emitter spread
+        // by area, each weighted by the form factor kernel there, cos cos / r^2 times the area it
+        // was drawn from. So it is the kernel's fraction, not the area's (a stand hiding the near
+        // half of a floodlight hides most of its light), and exactly 1 when nothing is in the way.
+        double weights = 0;
+        Rgb seen{};
         for (int j = 0; j < rays; ++j) {
-          Vec3 y = polygon_point(clipped[k].data(), clipped_count[k], cmj_sample(uint32_t(j), uint32_t(rays), target_pattern));
           const Vec3 from = footprint_point(e, surface, i, cmj_sample(uint32_t(j), uint32_t(rays), origin_pattern));
+          Vec3 polygon[4];
+          const int corners = visible_part(em, from, n, polygon);
+          if (corners < 3) continue;
+          float area;
+          const Vec3 y = polygon_point(polygon, corners, cmj_sample(uint32_t(j), uint32_t(rays), target_pattern), &area);
+          const Vec3 to_y = y - from;
+          const double r2 = dot(to_y, to_y);
+          const double weight = std::max(0.0f, dot(n, to_y)) * std::max(0.0f, -dot(em.normal, to_y)) / (r2 * r2) * area;
+          if (!(weight > 0)) continue;
+          weights += weight;
           const Vec3 origin = from + ng * e.offset[i];
           // The ray ends just off the emitter, on the receiver's side: stopping a fraction short
           // along the ray is not enough at grazing angles, where that point is still within
@@ -153,9 +193,9 @@ std::vector<Rgb> emitter_irradiance(const Elements& e, const Surface& surface, c
           Vec3 d = target - origin;
           float dist = length(d);
           if (dist > 0 && options.shadow_rays && tracer.occluded(origin, d / dist, 0.0f, dist)) continue;
-          visible += em.uniform ? em.emission : materials.emission(em.triangle, triangle_bary(em, y), 1.0f);
+          seen += (em.uniform ? em.emission : materials.emission(em.triangle, triangle_bary(em, y), 1.0f)) * float(weight);
         }
-        h += visible * float(factor[k] / rays);
+        if (weights > 0) h += seen * float(factor[k] / weights);
       }
       irradiance[i] = h;
     }

@@ -1,6 +1,7 @@
 // Direct irradiance at every element, in lux: from KHR_lights_punctual lights with shadow rays,
-// and from emitting surfaces as area lights (exact unoccluded form factor to each emitting
-// triangle, times the visible fraction measured with stratified shadow rays).
+// and from emitting surfaces as area lights (the exact unoccluded form factor to each emitting
+// triangle, averaged over points spread over the texel, times the seen fraction of it measured
+// with stratified shadow rays weighted by the form factor kernel).
 #pragma once
 
 #include <cstdint>

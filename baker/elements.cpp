@@ -89,8 +89,15 @@ Elements build_elements(const Surface& surface, const MaterialSampler& materials
       const Piece* last = &pieces[group_start[i + 1]];
       const Piece* largest = first;
       double area = 0;
-      bool uniform = options.filter != FootprintFilter::Everywhere;
+      bool uniform = options.filter != FootprintFilter::Everywhere, flat = true;
+      double covered = 0;  // texels^2
+      const uint32_t t0 = first->triangle;
       for (const Piece* p = first; p != last; ++p) {
+        covered += p->area;
+        const uint32_t tp = p->triangle;
+        flat &= surface.chart[tp] == surface.chart[t0] && dot(surface.normal[tp], surface.normal[t0]) > 0.9999f &&
+                std::fabs(dot(surface.corners[3 * tp] - surface.corners[3 * t0], surface.normal[t0])) <=
+                    1e-4f * std::sqrt(surface.area[t0] + surface.area[tp]);
         const Vec2* c = &surface.corner_lightmap[3 * p->triangle];
         float lm_area = 0.5f * std::fabs(cross2(c[1] - c[0], c[2] - c[0]));
         area += double(p->area) * surface.area[p->triangle] / lm_area;
@@ -110,6 +117,7 @@ Elements build_elements(const Surface& surface, const MaterialSampler& materials
       const Vec2* c = &surface.corner_lightmap[3 * t];
       float texel_size = std::sqrt(surface.area[t] / (0.5f * std::fabs(cross2(c[1] - c[0], c[2] - c[0]))));
       e.offset[i] = ray_offset(e.position[i], texel_size);
+      if (flat && covered > 0.999) e.flags[i] |= kFlatTexel;
 
       if (uniform) {
         e.reflectance[i] = materials.reflectance(t, bary, 1.0f);
@@ -172,7 +180,8 @@ bool footprint_surface_point(const Elements& elements, const Surface& surface, s
   uint32_t t = elements.triangle[i];
   Vec2 at{float(elements.texel[i] % uint32_t(page.width)) + u.x, float(elements.texel[i] / uint32_t(page.width)) + u.y};
   Vec2 b = lightmap_bary(surface, t, at);
-  if (!inside(b)) return false;
+  // Outside the element's triangle, a flat texel's point is still on the surface, in the plane.
+  if (!inside(b) && !(elements.flags[i] & kFlatTexel)) return false;
   point = surface.point(t, b);
   return true;
 }

@@ -21,6 +21,7 @@ enum ElementFlags : uint8_t {
   kJoinsRight = 8,    // the element to the right (same chart) is on the same side of all geometry
   kJoinsDown = 16,    // likewise the element below; patches only grow across these joins
   kFiltered = 32,     // reflectance and emission are box-filtered over the footprint (else read once)
+  kFlatTexel = 64,    // one plane of one chart covers the whole texel, whichever triangles it is cut into
 };
 
 struct Elements {

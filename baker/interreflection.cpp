@@ -41,14 +41,23 @@ void measure(const Elements& elements, const Patches& patches, const Surface& su
                           rows);
 }
 
-// Rows of the patches that were not split carry over to the finer patches: a share landing on a
-// split patch goes to its pieces by area (reciprocity then takes the pieces' own measured rows
-// into account). The pieces are returned in `fresh`: their rows are still to be measured.
+// A share of a carried row that landed on a patch split since: it goes to the pieces once their
+// own rows are measured.
+struct PendingShare {
+  uint32_t from;    // fine patch whose row it is
+  uint32_t target;  // coarse patch it landed on
+  float share;
+};
+
+// Rows of the patches that were not split carry over to the finer patches; their shares landing on
+// split patches wait in `pending`. The pieces of every coarse patch are returned in `pieces`, and
+// the fine patches whose rows are still to be measured in `fresh`.
 MeasuredRows carry_rows(const Patches& coarse, const Patches& fine, const std::vector<uint8_t>& split,
-                        const MeasuredRows& rows, std::vector<uint32_t>& fresh) {
+                        const MeasuredRows& rows, std::vector<uint32_t>& fresh,
+                        std::vector<std::vector<uint32_t>>& pieces, std::vector<PendingShare>& pending) {
   const size_t n = coarse.size();
   std::vector<uint32_t> same(n, UINT32_MAX);
-  std::vector<std::vector<uint32_t>> pieces(n);
+  pieces.assign(n, {});
   for (size_t p = 0; p < n; ++p) {
     for (uint32_t k = coarse.first_member[p]; k < coarse.first_member[p + 1]; ++k) {
       uint32_t piece = fine.patch_of_element[coarse.members[k]];
@@ -59,6 +68,7 @@ MeasuredRows carry_rows(const Patches& coarse, const Patches& fine, const std::v
   MeasuredRows out;
   out.resize(fine.size());
   fresh.clear();
+  pending.clear();
   for (size_t p = 0; p < n; ++p) {
     if (same[p] == UINT32_MAX) {
       fresh.insert(fresh.end(), pieces[p].begin(), pieces[p].end());
@@ -66,19 +76,47 @@ MeasuredRows carry_rows(const Patches& coarse, const Patches& fine, const std::v
     }
     auto& row = out.rows[same[p]];
     for (auto [q, f] : rows.rows[p]) {
-      if (same[q] != UINT32_MAX) {
-        row.emplace_back(same[q], f);
-        continue;
-      }
-      for (uint32_t piece : pieces[q]) row.emplace_back(piece, f * fine.area[piece] / coarse.area[q]);
+      if (same[q] != UINT32_MAX) row.emplace_back(same[q], f);
+      else pending.push_back({same[p], q, f});
     }
-    std::sort(row.begin(), row.end());
     out.escaped[same[p]] = rows.escaped[p];
     out.lost[same[p]] = rows.lost[p];
     out.rays[same[p]] = rows.rays[p];
   }
   std::sort(fresh.begin(), fresh.end());
   return out;
+}
+
+// A carried share landing on a split patch goes to its pieces as their own measured rows say they
+// see the row's patch back: by reciprocity A_p F_pr = A_r F_rp. Shared by area instead, a floor
+// patch would go on seeing the pieces of a ceiling patch that a lamp hides from it, and light
+// would pass through the lamp. Pieces whose rays found nothing of p share it by area.
+void resolve_pending(const Patches& fine, const std::vector<std::vector<uint32_t>>& pieces,
+                     const std::vector<PendingShare>& pending, MeasuredRows& rows) {
+  std::vector<uint32_t> touched;
+  std::vector<double> weight;
+  for (const PendingShare& s : pending) {
+    const std::vector<uint32_t>& to = pieces[s.target];
+    weight.assign(to.size(), 0.0);
+    double total = 0;
+    for (size_t k = 0; k < to.size(); ++k) {
+      const auto& row = rows.rows[to[k]];
+      auto at = std::lower_bound(row.begin(), row.end(), std::make_pair(s.from, 0.0f),
+                                 [](const auto& a, const auto& b) { return a.first < b.first; });
+      if (at != row.end() && at->first == s.from) total += weight[k] = double(fine.area[to[k]]) * at->second;
+    }
+    double area = 0;
+    for (uint32_t r : to) area += fine.area[r];
+    auto& row = rows.rows[s.from];
+    for (size_t k = 0; k < to.size(); ++k) {
+      double part = total > 0 ? weight[k] / total : fine.area[to[k]] / area;
+      if (part > 0) row.emplace_back(to[k], float(s.share * part));
+    }
+    touched.push_back(s.from);
+  }
+  std::sort(touched.begin(), touched.end());
+  touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+  for (uint32_t p : touched) std::sort(rows.rows[p].begin(), rows.rows[p].end());
 }
 
 }  // namespace
@@ -140,9 +178,12 @@ Interreflection solve_interreflection(const Elements& elements, const Surface& s
   MeasuredRows rows;
   rows.resize(out.patches.size());
   std::vector<uint32_t> which = all_patches(out.patches.size());
+  std::vector<std::vector<uint32_t>> pieces;
+  std::vector<PendingShare> pending;
   for (int round = 0;; ++round) {
     auto start = std::chrono::steady_clock::now();
     measure(elements, out.patches, surface, tracer, form_factors, power, which, seed, progress, rows);
+    resolve_pending(out.patches, pieces, pending, rows);
     out.transport = balanced_transport(out.patches, rows);
     out.form_factor_seconds += seconds_since(start);
     start = std::chrono::steady_clock::now();
@@ -156,7 +197,7 @@ Interreflection solve_interreflection(const Elements& elements, const Surface& s
     out.rounds.back().split = size_t(std::count(split.begin(), split.end(), uint8_t(1)));
     if (out.rounds.back().split == 0) break;
     Patches finer = split_patches(elements, surface, out.patches, split);
-    rows = carry_rows(out.patches, finer, split, rows, which);
+    rows = carry_rows(out.patches, finer, split, rows, which, pieces, pending);
     out.patches = std::move(finer);
     first_bounce(elements, out.patches, direct, patch_direct, power);
   }

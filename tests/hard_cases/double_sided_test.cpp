@@ -47,8 +47,12 @@ TEST(DoubleSided, ADoubleSidedLampLightsFromItsBackAsFromItsFront) {
   }
   RecordProperty("worst_relative_error", std::to_string(worst));
   EXPECT_GT(checked, 4000u);
-  // Both are the exact contour integral at each sample point: float rounding only.
-  EXPECT_LT(worst, 1e-4);
+  // A texel's value is the exact contour integral averaged over 16 points of its footprint; the
+  // closed form is taken at its sample point, which on texels the floor's diagonal cuts sits off
+  // the footprint's centre (measured 1.1% apart there, 0.1% elsewhere). 2% bounds that; a lamp
+  // lighting only from its front would leave this floor at zero.
+  EXPECT_LT(worst, 0.02);
+  // Front and back are the same integrals over the same points: float rounding only.
   Rgb from_front = test::mean_irradiance(front, on_floor), from_back = test::mean_irradiance(back, on_floor);
   EXPECT_NEAR(from_back.x, from_front.x, 1e-4 * from_front.x);
 }

@@ -1,6 +1,8 @@
-// Light leaks through a 1 cm wall, four times thinner than a texel. A lit room (white walls,
-// reflectance 0.8, so light reaches every corner many times over) and a closed dark room side by
-// side; the dark room must stay dark: under 0.1% of the lit room's mean irradiance.
+// A 1 cm wall between a lit room and a closed dark one, thinner than a texel: the floor, ceiling,
+// front and back run under, over and along it without a gap, so floor texels straddle the whole
+// wall, lit side, wall and dark side in one. Neither direct nor bounced light may pass: no ray may
+// start on the wrong side of the wall, slip through where it meets the floor, or gather from a
+// patch that spans both sides.
 #include <gtest/gtest.h>
 
 #include "hard_cases/hard_case_checks.h"
@@ -9,69 +11,62 @@
 namespace radbake {
 namespace {
 
-constexpr float kWallLo = 2.0f, kWallHi = 2.01f;  // the wall's two faces: 1 cm apart
+constexpr float kLitSide = 1.0f, kDarkSide = 1.01f;  // the wall's two faces, x in metres
 
-Light lamp() {
-  Light light;
-  light.intensity = 100;
-  light.position = {1.0f, 1.6f, 1.0f};
-  return light;
-}
-
-// Floor and ceiling run under and over the wall from one room into the other; the wall is a 1 cm
-// box standing on the floor and touching the ceiling, with no gap at either.
-Scene shared_floor() {
+Scene rooms_with_a_thin_wall() {
   Scene scene;
   int white = test::add_material(scene, {0.8f, 0.8f, 0.8f});
-  test::add_quad(scene, {0, 0, 2}, {4.01f, 0, 0}, {0, 0, -2}, white, "floor");
-  test::add_quad(scene, {0, 2, 0}, {4.01f, 0, 0}, {0, 0, 2}, white, "ceiling");
-  test::add_quad(scene, {0, 0, 0}, {4.01f, 0, 0}, {0, 2, 0}, white, "front");
-  test::add_quad(scene, {0, 0, 2}, {0, 2, 0}, {4.01f, 0, 0}, white, "back");
-  test::add_quad(scene, {0, 0, 0}, {0, 2, 0}, {0, 0, 2}, white, "left");
-  test::add_quad(scene, {4.01f, 0, 0}, {0, 0, 2}, {0, 2, 0}, white, "right");
-  test::add_box(scene, {kWallLo, 0, 0}, {kWallHi, 2, 2}, false, white, "wall");
+  int lamp = test::add_material(scene, {0, 0, 0}, {1, 1, 1}, 2000);
+  const float end = kDarkSide + 1;
+  // Floor, ceiling, front and back run the whole length, under, over and past the wall.
+  test::add_quad(scene, {0, 0, 1}, {end, 0, 0}, {0, 0, -1}, white, "floor");
+  test::add_quad(scene, {0, 1, 0}, {end, 0, 0}, {0, 0, 1}, white, "ceiling");
+  test::add_quad(scene, {0, 0, 0}, {end, 0, 0}, {0, 1, 0}, white, "front");
+  test::add_quad(scene, {0, 0, 1}, {0, 1, 0}, {end, 0, 0}, white, "back");
+  test::add_quad(scene, {0, 0, 0}, {0, 1, 0}, {0, 0, 1}, white, "left end");
+  test::add_quad(scene, {end, 0, 0}, {0, 0, 1}, {0, 1, 0}, white, "right end");
+  // The wall: two faces 1 cm apart from floor to ceiling and front to back, no gap anywhere.
+  test::add_quad(scene, {kLitSide, 0, 0}, {0, 0, 1}, {0, 1, 0}, white, "wall, lit face");
+  test::add_quad(scene, {kDarkSide, 0, 0}, {0, 1, 0}, {0, 0, 1}, white, "wall, dark face");
+  // Light that reaches the wall's foot and top at every angle: a bulb low by the wall and a lamp
+  // on the ceiling.
+  test::add_quad(scene, {0.3f, 0.999f, 0.3f}, {0.4f, 0, 0}, {0, 0, 0.4f}, lamp, "lamp");
+  Light bulb;
+  bulb.intensity = 50;
+  bulb.position = {0.9f, 0.1f, 0.5f};
+  scene.lights.push_back(bulb);
   return scene;
 }
 
-// Two closed rooms, each a box of its own, 1 cm apart.
-Scene two_boxes() {
-  Scene scene;
-  int white = test::add_material(scene, {0.8f, 0.8f, 0.8f});
-  test::add_box(scene, {0, 0, 0}, {kWallLo, 2, 2}, true, white, "lit room");
-  test::add_box(scene, {kWallHi, 0, 0}, {4.01f, 2, 2}, true, white, "dark room");
-  return scene;
-}
-
-struct Case {
-  const char* name;
-  Scene (*build)();
-  float density;  // texels per metre
-};
-
-class ThinWall : public ::testing::TestWithParam<Case> {};
+// Texels of 3.3, 2.9 and 4.1 cm fall differently on the wall (centred on it, or beside it).
+class ThinWall : public ::testing::TestWithParam<float> {};
 
 TEST_P(ThinWall, DarkRoomGetsUnderAThousandthOfTheLitRoomsLight) {
-  Scene scene = GetParam().build();
-  scene.lights.push_back(lamp());
-  BakeResult r = test::bake_scene(scene, {GetParam().density, 512, 2}, {}).result;
+  test::Baked b = test::bake_scene(rooms_with_a_thin_wall(), {GetParam(), 256, 2}, {});
+  const BakeResult& r = b.result;
   test::expect_finite_and_non_negative(r);
   size_t lit_count = 0, dark_count = 0;
-  Rgb lit = test::mean_irradiance(r, [](Vec3 x, Vec3) { return x.x < kWallLo - 1e-3f; }, &lit_count);
-  Rgb dark = test::mean_irradiance(r, [](Vec3 x, Vec3) { return x.x > kWallHi + 1e-3f; }, &dark_count);
+  const Rgb lit = test::mean_irradiance(r, [](Vec3 p, Vec3) { return p.x < kLitSide; }, &lit_count);
+  const Rgb dark = test::mean_irradiance(r, [](Vec3 p, Vec3) { return p.x > kDarkSide - 1e-4f; }, &dark_count);
+  // Every valid texel of the dark room, the wall's dark face and the floor along its foot
+  // included: the brightest of them, not only the mean.
+  float brightest = 0;
+  Vec3 where{};
+  for (size_t i = 0; i < r.elements.size(); ++i)
+    if (r.elements.valid(i) && r.elements.position[i].x > kDarkSide - 1e-4f && r.irradiance[i].x > brightest)
+      brightest = r.irradiance[i].x, where = r.elements.position[i];
   RecordProperty("lit_mean_lux", std::to_string(lit.x));
   RecordProperty("dark_mean_lux", std::to_string(dark.x));
-  EXPECT_GT(lit_count, 1000u);
-  EXPECT_GT(dark_count, 1000u);
-  EXPECT_GT(lit.x, 20.0f);  // the lamp alone gives 100 / 1.6^2 = 39 lux under it
-  EXPECT_LT(dark.x, 1e-3f * lit.x);
+  RecordProperty("dark_brightest_lux", std::to_string(brightest));
+  EXPECT_GT(lit_count, 2000u);
+  EXPECT_GT(dark_count, 2000u);
+  // A thousandth: what the brief allows; a leak through the wall's foot or top, or a patch across
+  // the wall, puts a percent or more of the lit room's light on the dark side.
+  EXPECT_LT(dark.x, 0.001f * lit.x);
+  EXPECT_LT(brightest, 0.001f * lit.x) << "at " << where.x << ", " << where.y << ", " << where.z;
 }
 
-const Case kCases[] = {{"SharedFloorAndCeiling", shared_floor, 24.0f},
-                       {"SharedFloorAndCeilingOtherTexels", shared_floor, 29.3f},
-                       {"TwoClosedBoxes", two_boxes, 24.0f}};
-
-INSTANTIATE_TEST_SUITE_P(Scenes, ThinWall, ::testing::ValuesIn(kCases),
-                         [](const ::testing::TestParamInfo<Case>& info) { return std::string(info.param.name); });
+INSTANTIATE_TEST_SUITE_P(Texels, ThinWall, ::testing::Values(30.0f, 34.5f, 24.4f));
 
 }  // namespace
 }  // namespace radbake

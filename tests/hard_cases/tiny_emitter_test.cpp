@@ -37,9 +37,12 @@ TEST(TinyEmitter, EveryFloorTexelMatchesTheClosedForm) {
   RecordProperty("worst_relative_error", std::to_string(worst));
   EXPECT_GT(checked, 4000u);
   // The floor cannot see itself and the lamp is black: irradiance is the lamp's alone, integrated
-  // exactly at each sample point (Lambert's contour integral, in double: in float the far texels
-  // were 0.84% off). What remains is storing the result as float: 1e-4 bounds it (measured 1e-7).
-  EXPECT_LT(worst, 1e-4);
+  // exactly (Lambert's contour integral, in double: in float the far texels were 0.84% off) and
+  // averaged over 16 points of each texel's footprint, against the closed form at the sample
+  // point: they differ by the gradient times the sample's offset from the footprint's centre,
+  // measured 0.15%. 0.5% bounds that; one hemisphere ray in ten thousand finding the lamp would
+  // be off by orders of magnitude.
+  EXPECT_LT(worst, 0.005);
 }
 
 }  // namespace
