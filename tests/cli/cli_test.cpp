@@ -68,7 +68,8 @@ TEST(Cli, UsageErrorsExitTwoWithOneLine) {
 class CliBadInput : public ::testing::TestWithParam<std::pair<const char*, const char*>> {};
 
 TEST_P(CliBadInput, ExitsTwoWithAClearLineAndWritesNothing) {
-  std::string parent = test::fresh_folder("cli_bad");
+  // A folder per case: ctest -j runs the cases side by side.
+  std::string parent = test::fresh_folder(std::string("cli_bad_") + GetParam().first);
   Outcome r = radbake("bake " + fixture(std::string("bad/") + GetParam().first) + " -o " + parent + "/out");
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.err.rfind("radbake: error: ", 0), 0u) << r.err;
