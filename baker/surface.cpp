@@ -50,6 +50,7 @@ Surface build_surface(const Scene& scene, const Atlas& atlas) {
       }
       s.instance.push_back(uint32_t(i));
       s.material.push_back(inst.material);
+      s.double_sided.push_back(material_of(scene, inst.material).double_sided);
       s.page.push_back(uint32_t(lm.page));
       s.chart.push_back(lm.triangle_chart[t]);
     }
