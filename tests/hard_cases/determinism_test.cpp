@@ -4,8 +4,6 @@
 // a hash of the seed and what it is for, and no sum depends on how the work is split.
 #include <gtest/gtest.h>
 
-#include <cstring>
-
 #include "hard_cases/hard_case_checks.h"
 #include "support/scene_builders.h"
 
@@ -30,15 +28,6 @@ Scene cluttered_room() {
   return scene;
 }
 
-bool same_pages(const std::vector<LightmapPage>& a, const std::vector<LightmapPage>& b) {
-  if (a.size() != b.size()) return false;
-  for (size_t p = 0; p < a.size(); ++p)
-    if (a[p].texels.size() != b[p].texels.size() ||
-        std::memcmp(a[p].texels.data(), b[p].texels.data(), a[p].texels.size() * sizeof(Rgb)) != 0)
-      return false;
-  return true;
-}
-
 class Determinism : public ::testing::TestWithParam<FormFactorMethod> {};
 
 TEST_P(Determinism, SameSeedAndAnyThreadCountGiveBitIdenticalPages) {
@@ -60,13 +49,13 @@ TEST_P(Determinism, SameSeedAndAnyThreadCountGiveBitIdenticalPages) {
   ASSERT_GT(first.report.subdivision_rounds.size(), 1u);  // rows really were carried
   ASSERT_GT(first.report.patches, 500u);
 
-  EXPECT_TRUE(same_pages(first.pages, bake(scene, atlas, options).pages)) << "same seed, two threads, again";
+  EXPECT_TRUE(test::same_pages(first.pages, bake(scene, atlas, options).pages)) << "same seed, two threads, again";
   BakeOptions one_thread = options;
   one_thread.threads = 1;
-  EXPECT_TRUE(same_pages(first.pages, bake(scene, atlas, one_thread).pages)) << "one thread";
+  EXPECT_TRUE(test::same_pages(first.pages, bake(scene, atlas, one_thread).pages)) << "one thread";
   BakeOptions other_seed = options;
   other_seed.seed = 2;
-  EXPECT_FALSE(same_pages(first.pages, bake(scene, atlas, other_seed).pages)) << "the seed drives the sampling";
+  EXPECT_FALSE(test::same_pages(first.pages, bake(scene, atlas, other_seed).pages)) << "the seed drives the sampling";
 }
 
 INSTANTIATE_TEST_SUITE_P(FormFactors, Determinism, ::testing::Values(FormFactorMethod::RayCast, FormFactorMethod::Hemicube),
