@@ -46,8 +46,9 @@ TEST(DoubleSided, EmitterFacingAwayLightsTheFloorFromItsBack) {
   // 0.5%: the form factor is exact, averaged over 16 points of each 6 cm texel (see the tiny
   // emitter case); an emitter dark at the back is 100% off.
   EXPECT_LT(worst, 0.005);
-  // Like the same lamp turned toward the floor: the same texels, other random numbers.
-  EXPECT_NEAR(mean_both, mean_facing, 0.005 * mean_facing);
+  // Like the same lamp turned toward the floor: the same texels and random numbers, and the same
+  // form factor whichever face looks at the floor, so equal to round-off (measured: identical).
+  EXPECT_NEAR(mean_both, mean_facing, 1e-4 * mean_facing);
   // The lamp's light leaves from both faces: twice its area's worth, all accounted for.
   EXPECT_NEAR(both_faces.report.balance.emitted, 2 * kExitancePerEmissiveUnit * kLuminance * 1.0, 1.0);
   EXPECT_LT(std::fabs(both_faces.report.balance.relative_error), 0.005);
