@@ -16,6 +16,7 @@ struct Emitter {
   Vec3 normal;
   bool uniform;
   Rgb emission;  // lm/m2, exact when uniform
+  bool double_sided;  // emits from its back too, the same light
 };
 
 std::vector<Emitter> collect_emitters(const Surface& surface, const MaterialSampler& materials) {
@@ -23,11 +24,8 @@ std::vector<Emitter> collect_emitters(const Surface& surface, const MaterialSamp
   for (uint32_t t = 0; t < surface.triangle_count(); ++t) {
     if (!materials.emits(t) || !(surface.area[t] > 0)) continue;
     Emitter em{t, {surface.corners[3 * t], surface.corners[3 * t + 1], surface.corners[3 * t + 2]},
-               surface.normal[t], materials.is_uniform(t), materials.emission(t, {1.0f / 3, 1.0f / 3}, 1.0f)};
-    out.push_back(em);
-    if (!surface.double_sided[t]) continue;
-    em.normal = -em.normal;  // glTF double-sided: the back face emits too, as its own emitter
-    std::swap(em.corner[1], em.corner[2]);
+               surface.normal[t], materials.is_uniform(t), materials.emission(t, {1.0f / 3, 1.0f / 3}, 1.0f),
+               surface.double_sided[t] != 0};
     out.push_back(em);
   }
   return out;
@@ -50,9 +48,13 @@ int clip_to_hemisphere(Vec3 x, Vec3 n, const Vec3* in, int count, Vec3* out) {
 }
 
 // The part of the emitter above the horizon of point x (unit normal n), as a polygon of up to 4
-// corners; fewer than 3 when the emitter faces away from x or lies below its horizon.
-int visible_part(const Emitter& em, Vec3 x, Vec3 n, Vec3* polygon) {
-  if (dot(x - em.corner[0], em.normal) <= 0) return 0;
+// corners, and the normal of the emitter's face toward x in `facing`; fewer than 3 corners when
+// the emitter shows x its back (and is single-sided), lies below x's horizon, or is edge-on: x
+// within `offset` (the receiver's ray offset) of its plane, as the emitter's own other triangles are.
+int visible_part(const Emitter& em, Vec3 x, Vec3 n, float offset, Vec3* polygon, Vec3& facing) {
+  const float height = dot(x - em.corner[0], em.normal);
+  if (!(height > offset) && !(em.double_sided && height < -offset)) return 0;
+  facing = height > 0 ? em.normal : -em.normal;
   return clip_to_hemisphere(x, n, em.corner, 3, polygon);
 }
 
@@ -80,29 +82,24 @@ Vec2 triangle_bary(const Emitter& em, Vec3 y) {
 
 }  // namespace
 
-namespace {
-
-struct Dvec {
-  double x, y, z;
-};
-Dvec unit_from_to(Vec3 from, Vec3 to) {
-  Dvec d{double(to.x) - from.x, double(to.y) - from.y, double(to.z) - from.z};
-  double len = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
-  return len > 0 ? Dvec{d.x / len, d.y / len, d.z / len} : Dvec{0, 0, 0};
-}
-
-}  // namespace
-
-// In double: seen from afar, a small polygon's edge terms are each hundreds of times the sum they
-// cancel down to, and single precision would leave a 1 cm lamp 2 m away 0.5% wrong.
 double polygon_form_factor(Vec3 x, Vec3 n, const Vec3* polygon, int count) {
+  // In double: the edge terms of a small or distant polygon (a 1 cm lamp 3 m away) nearly cancel,
+  // and in float what is left was off by a percent.
+  struct D3 {
+    double x, y, z;
+  };
+  auto unit_toward = [&](Vec3 p) {
+    D3 d{double(p.x) - x.x, double(p.y) - x.y, double(p.z) - x.z};
+    double len = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+    return D3{d.x / len, d.y / len, d.z / len};
+  };
   double sum = 0;
   for (int i = 0; i < count; ++i) {
-    Dvec a = unit_from_to(x, polygon[i]), b = unit_from_to(x, polygon[(i + 1) % count]);
-    Dvec c{a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-    double len = std::sqrt(c.x * c.x + c.y * c.y + c.z * c.z);
-    if (len < 1e-15) continue;
-    double angle = std::atan2(len, a.x * b.x + a.y * b.y + a.z * b.z);
+    const D3 a = unit_toward(polygon[i]), b = unit_toward(polygon[(i + 1) % count]);
+    const D3 c{a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+    const double len = std::sqrt(c.x * c.x + c.y * c.y + c.z * c.z);
+    if (!(len > 1e-15)) continue;
+    const double angle = std::atan2(len, a.x * b.x + a.y * b.y + a.z * b.z);
     sum += angle * (n.x * c.x + n.y * c.y + n.z * c.z) / len;
   }
   return std::fabs(sum) / (2.0 * 3.14159265358979323846);
@@ -139,8 +136,8 @@ std::vector<Rgb> emitter_irradiance(const Elements& e, const Surface& surface, c
         factor[k] = 0;
         if (emitters[k].triangle == e.triangle[i]) continue;
         for (const Vec3& x : points) {
-          Vec3 polygon[4];
-          const int corners = visible_part(emitters[k], x, n, polygon);
+          Vec3 polygon[4], facing;
+          const int corners = visible_part(emitters[k], x, n, e.offset[i], polygon, facing);
           if (corners >= 3) factor[k] += polygon_form_factor(x, n, polygon, corners) / kFormFactorPoints;
         }
         total += factor[k] * sum(emitters[k].emission);
@@ -169,21 +166,21 @@ std::vector<Rgb> emitter_irradiance(const Elements& e, const Surface& surface, c
         Rgb seen{};
         for (int j = 0; j < rays; ++j) {
           const Vec3 from = footprint_point(e, surface, i, cmj_sample(uint32_t(j), uint32_t(rays), origin_pattern));
-          Vec3 polygon[4];
-          const int corners = visible_part(em, from, n, polygon);
+          Vec3 polygon[4], facing;
+          const int corners = visible_part(em, from, n, e.offset[i], polygon, facing);
           if (corners < 3) continue;
           float area;
           const Vec3 y = polygon_point(polygon, corners, cmj_sample(uint32_t(j), uint32_t(rays), target_pattern), &area);
           const Vec3 to_y = y - from;
           const double r2 = dot(to_y, to_y);
-          const double weight = std::max(0.0f, dot(n, to_y)) * std::max(0.0f, -dot(em.normal, to_y)) / (r2 * r2) * area;
+          const double weight = std::max(0.0f, dot(n, to_y)) * std::max(0.0f, -dot(facing, to_y)) / (r2 * r2) * area;
           if (!(weight > 0)) continue;
           weights += weight;
           const Vec3 origin = from + ng * e.offset[i];
           // The ray ends just off the emitter, on the receiver's side: stopping a fraction short
           // along the ray is not enough at grazing angles, where that point is still within
           // rounding of the emitter's plane and the emitter would occlude itself.
-          Vec3 target = y + em.normal * std::max(e.offset[i], 1e-5f * length(y - origin));
+          Vec3 target = y + facing * std::max(e.offset[i], 1e-5f * length(y - origin));
           // Nor may it end lower over the receiver's plane than the ray starts: a target in that
           // plane (an emitter meeting the receiver at an edge, or a distant one that merely lies
           // in the plane extended) would have the ray graze the receiver, or slip between a wall

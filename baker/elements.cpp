@@ -106,7 +106,11 @@ Elements build_elements(const Surface& surface, const MaterialSampler& materials
                    (options.filter == FootprintFilter::BetweenMaterials || materials.is_uniform(p->triangle));
       }
       uint32_t t = largest->triangle;
-      Vec2 bary = lightmap_bary(surface, t, largest->centroid);
+      const bool whole_plane = flat && covered > 0.999;
+      // A texel one plane covers whole has its sample at its centre, where its mean lies.
+      const uint32_t width = uint32_t(surface.pages[largest->page].width);
+      const Vec2 centre{float(largest->texel % width) + 0.5f, float(largest->texel / width) + 0.5f};
+      Vec2 bary = lightmap_bary(surface, t, whole_plane ? centre : largest->centroid);
       e.position[i] = surface.point(t, bary);
       e.normal[i] = surface.shading_normal(t, bary);
       if (dot(e.normal[i], surface.normal[t]) <= 0) e.normal[i] = surface.normal[t];
@@ -117,7 +121,7 @@ Elements build_elements(const Surface& surface, const MaterialSampler& materials
       const Vec2* c = &surface.corner_lightmap[3 * t];
       float texel_size = std::sqrt(surface.area[t] / (0.5f * std::fabs(cross2(c[1] - c[0], c[2] - c[0]))));
       e.offset[i] = ray_offset(e.position[i], texel_size);
-      if (flat && covered > 0.999) e.flags[i] |= kFlatTexel;
+      if (whole_plane) e.flags[i] |= kFlatTexel;
 
       if (uniform) {
         e.reflectance[i] = materials.reflectance(t, bary, 1.0f);

@@ -57,8 +57,8 @@ Interreflection solve_interreflection(const Elements& elements, const Surface& s
                                       const SolveOptions& solve, uint64_t seed, Progress& progress,
                                       const InterreflectionObserver& observer = {});
 
-// Irradiance per patch from the other patches' reflected `exitance`: sum over q of F_pq B_q (by
-// reciprocity, what p gathers), lux.
+// Irradiance per patch from the other patches' reflected `exitance`: what each gathers, sum over
+// q of B_q A_q F_qp / A_p (= F_pq B_q by reciprocity between single-sided patches), lux.
 std::vector<Rgb> gathered_irradiance(const Patches& patches, const PatchTransport& transport,
                                      const std::vector<Rgb>& exitance);
 

@@ -157,8 +157,4 @@ bool MaterialSampler::is_uniform(uint32_t triangle) const {
 
 bool MaterialSampler::emits(uint32_t triangle) const { return material_of(scene_, surface_.material[triangle]).emits(); }
 
-bool MaterialSampler::double_sided(uint32_t triangle) const {
-  return material_of(scene_, surface_.material[triangle]).double_sided;
-}
-
 }  // namespace radbake

@@ -34,7 +34,6 @@ class MaterialSampler {
   // True when neither reflectance nor emission varies over the triangle (no textures, no COLOR_0).
   bool is_uniform(uint32_t triangle) const;
   bool emits(uint32_t triangle) const;
-  bool double_sided(uint32_t triangle) const;
 
  private:
   struct Level {

@@ -22,7 +22,7 @@ struct Surface {
   std::vector<float> area;            // m^2
   std::vector<uint32_t> instance;     // index into Scene::instances
   std::vector<int> material;          // index into Scene::materials, -1 for the default
-  std::vector<uint8_t> double_sided;  // glTF doubleSided: both faces emit and reflect (one texel for both)
+  std::vector<uint8_t> double_sided;  // 1: the material is double-sided (its back shows the front's texel)
   std::vector<uint32_t> page;
   std::vector<uint32_t> chart;        // UINT32_MAX for degenerate triangles
   std::vector<AtlasPage> pages;

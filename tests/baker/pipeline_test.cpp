@@ -1,8 +1,6 @@
 // The bake as a whole: determinism, thread counts, cancellation, solver agreement, stored quantity.
 #include <gtest/gtest.h>
 
-#include <cstring>
-
 #include "baker/errors.h"
 #include "support/scene_builders.h"
 
@@ -25,25 +23,16 @@ Scene small_room() {
   return scene;
 }
 
-bool same_pages(const std::vector<LightmapPage>& a, const std::vector<LightmapPage>& b) {
-  if (a.size() != b.size()) return false;
-  for (size_t p = 0; p < a.size(); ++p)
-    if (a[p].texels.size() != b[p].texels.size() ||
-        std::memcmp(a[p].texels.data(), b[p].texels.data(), a[p].texels.size() * sizeof(Rgb)) != 0)
-      return false;
-  return true;
-}
-
 const AtlasOptions kAtlas{24.0f, 256, 2};
 
 TEST(Pipeline, SameSeedGivesBitIdenticalLightmaps) {
   BakeResult a = test::bake_scene(small_room(), kAtlas, {}).result;
   BakeResult b = test::bake_scene(small_room(), kAtlas, {}).result;
-  EXPECT_TRUE(same_pages(a.pages, b.pages));
+  EXPECT_TRUE(test::same_pages(a.pages, b.pages));
   BakeOptions other_seed;
   other_seed.seed = 2;
   BakeResult c = test::bake_scene(small_room(), kAtlas, other_seed).result;
-  EXPECT_FALSE(same_pages(a.pages, c.pages));  // the seed really drives the sampling
+  EXPECT_FALSE(test::same_pages(a.pages, c.pages));  // the seed really drives the sampling
 }
 
 TEST(Pipeline, ThreadCountDoesNotChangeTheResult) {
@@ -52,7 +41,7 @@ TEST(Pipeline, ThreadCountDoesNotChangeTheResult) {
   two.threads = 2;
   BakeResult a = test::bake_scene(small_room(), kAtlas, one).result;
   BakeResult b = test::bake_scene(small_room(), kAtlas, two).result;
-  EXPECT_TRUE(same_pages(a.pages, b.pages));
+  EXPECT_TRUE(test::same_pages(a.pages, b.pages));
 }
 
 TEST(Pipeline, ProgressCanCancelTheBake) {

@@ -1,10 +1,8 @@
-// Determinism under the hardest settings: many patches, adaptive subdivision re-measuring rows
-// between rounds, both form factor methods, coloured light and two kinds of source. Every random
-// number is a hash of the seed and what it is for, and every parallel sum has a fixed order, so
-// neither a second run nor another thread count may change a single bit.
+// Determinism on a hard bake: many small patches, adaptive subdivision (rows carried between
+// rounds), a double-sided panel (rows per face), by ray casting and by hemicubes. The same seed
+// must give bit-identical lightmap pages, and so must one thread and two: every random number is
+// a hash of the seed and what it is for, and no sum depends on how the work is split.
 #include <gtest/gtest.h>
-
-#include <cstring>
 
 #include "hard_cases/hard_case_checks.h"
 #include "support/scene_builders.h"
@@ -12,52 +10,55 @@
 namespace radbake {
 namespace {
 
-Scene coloured_room() {
-  Scene scene = test::lit_room(0.7f, {1, 0.9f, 0.8f}, true);
+Scene cluttered_room() {
+  Scene scene;
+  int white = test::add_material(scene, {0.75f, 0.75f, 0.75f});
   int red = test::add_material(scene, {0.7f, 0.15f, 0.1f});
-  int lamp = test::add_material(scene, {0, 0, 0}, {0.8f, 0.9f, 1}, 400);
-  scene.instances[1].material = red;  // the room's +x wall
-  test::add_quad(scene, {1.2f, 1.999f, 1.2f}, {0, 0, 0.4f}, {0.4f, 0, 0}, lamp, "lamp");
+  int card = test::add_material(scene, {0.6f, 0.6f, 0.8f}, {0, 0, 0}, 1, true);
+  int lamp = test::add_material(scene, {0, 0, 0}, {1, 1, 1}, 2000);
+  test::add_box(scene, {0, 0, 0}, {2, 1.5f, 2}, true, white, "room");
+  test::add_box(scene, {0.3f, 0, 0.3f}, {0.8f, 0.6f, 0.7f}, false, red, "block");
+  test::add_box(scene, {1.2f, 0, 1.1f}, {1.6f, 1.0f, 1.5f}, false, white, "tall block");
+  test::add_quad(scene, {1.0f, 0.2f, 0.2f}, {0.6f, 0, 0}, {0, 0.6f, 0.3f}, card, "double-sided card");
+  test::add_quad(scene, {0.8f, 1.49f, 0.8f}, {0.4f, 0, 0}, {0, 0, 0.4f}, lamp, "lamp");
+  Light bulb;
+  bulb.intensity = 15;
+  bulb.position = {0.5f, 1.2f, 1.5f};
+  scene.lights.push_back(bulb);
   return scene;
-}
-
-bool same_bits(const BakeResult& a, const BakeResult& b) {
-  if (a.pages.size() != b.pages.size() || a.vertex_values.size() != b.vertex_values.size()) return false;
-  for (size_t p = 0; p < a.pages.size(); ++p)
-    if (a.pages[p].texels.size() != b.pages[p].texels.size() ||
-        std::memcmp(a.pages[p].texels.data(), b.pages[p].texels.data(), a.pages[p].texels.size() * sizeof(Rgb)))
-      return false;
-  for (size_t k = 0; k < a.vertex_values.size(); ++k)
-    if (a.vertex_values[k].size() != b.vertex_values[k].size() ||
-        std::memcmp(a.vertex_values[k].data(), b.vertex_values[k].data(), a.vertex_values[k].size() * sizeof(Rgb)))
-      return false;
-  return true;
 }
 
 class Determinism : public ::testing::TestWithParam<FormFactorMethod> {};
 
-TEST_P(Determinism, SameSeedAndAnyThreadCountGiveTheSameBits) {
-  const Scene scene = coloured_room();
-  const Atlas atlas = test::unwrap(scene, {16.0f, 256, 2});
+TEST_P(Determinism, SameSeedAndAnyThreadCountGiveBitIdenticalPages) {
+  const Scene scene = cluttered_room();
+  const Atlas atlas = test::unwrap(scene, {12, 128, 2});
   BakeOptions options;
+  options.patches.block_size = 2;
+  options.subdivision.tolerance = 0.2;
   options.form_factors.method = GetParam();
-  options.form_factors.hemicube_resolution = 32;
-  options.subdivision.tolerance = 0.3;
-  options.subdivision.max_rounds = 2;
+  // Few rays: this case is about which numbers come out, not how good they are.
+  options.form_factors.rays_per_patch = 256;
+  options.form_factors.hemicube_resolution = 16;
+  options.gather_rays = 32;
   options.threads = 2;
-  BakeResult first = bake(scene, atlas, options), again = bake(scene, atlas, options);
+  const BakeResult first = bake(scene, atlas, options);
   test::expect_finite_and_non_negative(first);
-  ASSERT_GE(first.report.subdivision_rounds.size(), 2u);  // the rows really were re-measured
-  EXPECT_TRUE(same_bits(first, again));
-  options.threads = 1;
-  EXPECT_TRUE(same_bits(first, bake(scene, atlas, options)));
-  options.threads = 2;
-  options.seed = 7;
-  EXPECT_FALSE(same_bits(first, bake(scene, atlas, options)));  // the seed does drive the sampling
+  RecordProperty("patches", std::to_string(first.report.patches));
+  RecordProperty("subdivision_rounds", std::to_string(first.report.subdivision_rounds.size()));
+  ASSERT_GT(first.report.subdivision_rounds.size(), 1u);  // rows really were carried
+  ASSERT_GT(first.report.patches, 500u);
+
+  EXPECT_TRUE(test::same_pages(first.pages, bake(scene, atlas, options).pages)) << "same seed, two threads, again";
+  BakeOptions one_thread = options;
+  one_thread.threads = 1;
+  EXPECT_TRUE(test::same_pages(first.pages, bake(scene, atlas, one_thread).pages)) << "one thread";
+  BakeOptions other_seed = options;
+  other_seed.seed = 2;
+  EXPECT_FALSE(test::same_pages(first.pages, bake(scene, atlas, other_seed).pages)) << "the seed drives the sampling";
 }
 
-INSTANTIATE_TEST_SUITE_P(FormFactors, Determinism,
-                         ::testing::Values(FormFactorMethod::RayCast, FormFactorMethod::Hemicube),
+INSTANTIATE_TEST_SUITE_P(FormFactors, Determinism, ::testing::Values(FormFactorMethod::RayCast, FormFactorMethod::Hemicube),
                          [](const ::testing::TestParamInfo<FormFactorMethod>& info) {
                            return info.param == FormFactorMethod::RayCast ? "RayCast" : "Hemicube";
                          });

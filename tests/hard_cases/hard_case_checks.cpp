@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 
 namespace radbake::test {
@@ -45,6 +46,19 @@ void expect_finite_and_non_negative(const BakeResult& r) {
       for (size_t v = 0; v < r.vertex_values[m].size(); ++v)
         bad.check(r.vertex_values[m][v], [&] { return std::to_string(v) + " of instance " + std::to_string(m); });
   }
+}
+
+double worst_relative_error(const BakeResult& r, const std::function<bool(Vec3, Vec3)>& where,
+                            const std::function<double(Vec3, Vec3)>& expected, size_t* count) {
+  double worst = 0;
+  *count = 0;
+  for (size_t i = 0; i < r.elements.size(); ++i) {
+    if (!r.elements.valid(i) || !where(r.elements.position[i], r.elements.normal[i])) continue;
+    const double e = expected(r.elements.position[i], r.elements.normal[i]);
+    worst = std::max(worst, std::fabs(r.irradiance[i].x - e) / e);
+    ++*count;
+  }
+  return worst;
 }
 
 }  // namespace radbake::test

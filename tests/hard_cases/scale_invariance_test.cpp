@@ -70,20 +70,27 @@ TEST_P(ScaleInvariance, TexelsMatchTheRoomInMetres) {
   ASSERT_EQ(scaled.elements.size(), reference.elements.size());
   const double mean = test::mean_irradiance(reference, [](Vec3, Vec3) { return true; }).x;
   double worst = 0;
-  size_t validity_changes = 0;
+  size_t compared = 0, differing = 0, validity_changes = 0;
   for (size_t i = 0; i < reference.elements.size(); ++i) {
     validity_changes += reference.elements.valid(i) != scaled.elements.valid(i);
     if (!reference.elements.valid(i) || !scaled.elements.valid(i)) continue;
     // Relative to the texel's own value, or to a tenth of the mean in deep shadow.
     const double value = reference.irradiance[i].x, floor = std::max(value, 0.1 * mean);
-    worst = std::max(worst, std::fabs(scaled.irradiance[i].x - value) / floor);
+    const double difference = std::fabs(scaled.irradiance[i].x - value) / floor;
+    worst = std::max(worst, difference);
+    ++compared;
+    differing += difference > 0.01;
   }
   RecordProperty("worst_texel_relative_difference", std::to_string(worst));
-  // 1%: round-off at another magnitude moves a sample point or a ray by a few ulps, which may
-  // turn one shadow ray of a penumbra texel now and then; a ray offset or epsilon that does not
-  // scale leaks light into shadow or self-shadows whole rows of texels.
-  EXPECT_LT(worst, 0.01);
+  RecordProperty("texels_over_1_percent", std::to_string(differing));
   EXPECT_EQ(validity_changes, 0u);
+  // Every texel within 1%, but for one in a thousand: round-off at another magnitude moves a ray
+  // by an ulp, and a shadow ray passing exactly through a block's edge may then be stopped in
+  // one bake and not the other (a quarter of that texel's bulb light). A ray offset or epsilon
+  // that does not scale leaks light into shadow or self-shadows whole rows of texels.
+  EXPECT_LE(differing, compared / 1000);
+  const double scaled_mean = test::mean_irradiance(scaled, [](Vec3, Vec3) { return true; }).x;
+  EXPECT_NEAR(scaled_mean, mean, 0.001 * mean);  // the room's mean: 0.1%
   EXPECT_NEAR(scaled.report.balance.relative_error, reference.report.balance.relative_error, 0.001);
 }
 

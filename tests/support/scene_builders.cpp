@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 
@@ -129,6 +130,15 @@ Baked bake_scene(const Scene& scene, const AtlasOptions& atlas_options, const Ba
   b.atlas = unwrap(scene, atlas_options);
   b.result = bake(scene, b.atlas, options);
   return b;
+}
+
+bool same_pages(const std::vector<LightmapPage>& a, const std::vector<LightmapPage>& b) {
+  if (a.size() != b.size()) return false;
+  for (size_t p = 0; p < a.size(); ++p)
+    if (a[p].texels.size() != b[p].texels.size() ||
+        std::memcmp(a[p].texels.data(), b[p].texels.data(), a[p].texels.size() * sizeof(Rgb)) != 0)
+      return false;
+  return true;
 }
 
 Rgb mean_irradiance(const BakeResult& r, const std::function<bool(Vec3, Vec3)>& where, size_t* count) {

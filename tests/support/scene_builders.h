@@ -53,6 +53,9 @@ struct Baked {
 };
 Baked bake_scene(const Scene& scene, const AtlasOptions& atlas_options, const BakeOptions& options);
 
+// True when both bakes' lightmap pages are bit for bit the same.
+bool same_pages(const std::vector<LightmapPage>& a, const std::vector<LightmapPage>& b);
+
 // Area-weighted mean irradiance (lux) over valid elements whose sample point and normal pass `where`.
 Rgb mean_irradiance(const BakeResult& r, const std::function<bool(Vec3 position, Vec3 normal)>& where,
                     size_t* count = nullptr);
