@@ -1,7 +1,6 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 
 #include "baker/direct_light.h"
@@ -112,7 +111,7 @@ std::vector<Rgb> emitter_irradiance(const Elements& e, const Surface& surface, c
   const std::vector<Emitter> emitters = collect_emitters(surface, materials);
   if (emitters.empty()) return irradiance;
   // Rays are shared out among the emitters by their unoccluded contribution, so a hundred small
-  // emitting triangles cost about what one bright one does (at most twice the budget).
+  // emitting triangles cost about what one bright one does (at most about twice the budget).
   const int budget = 2 * std::max(1, options.area_light_rays);
   progress.begin("area lights", e.size());
   tbb::parallel_for(tbb::blocked_range<size_t>(0, e.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
