@@ -209,9 +209,12 @@ EffectPlan plan_effects(const Scene& scene, const PlanOptions& options) {
   plan.light_traced.assign(scene.lights.size(), 0);
   for (size_t l = 0; l < scene.lights.size(); ++l) {
     const Light& light = scene.lights[l];
-    if (options.simulate_everything || !(light.intensity > 0)) {
-      plan.light_traced[l] = options.simulate_everything;
-      if (!(light.intensity > 0)) decide(light_name(scene, l), "culled", "its intensity is zero");
+    if (options.simulate_everything) {
+      plan.light_traced[l] = 1;
+      continue;
+    }
+    if (!(light.intensity > 0)) {
+      decide(light_name(scene, l), "culled: no shadow rays", "its intensity is zero");
       continue;
     }
     for_each_triangle(scene, [&](const MeshInstance& inst, const Vec3(&c)[3]) {
