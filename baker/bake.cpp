@@ -11,6 +11,7 @@
 
 #include "baker/errors.h"
 #include "baker/final_gather.h"
+#include "baker/finite_checks.h"
 #include "baker/material_sampler.h"
 #include "baker/patch_transport.h"
 #include "baker/ray_tracer.h"
@@ -66,7 +67,7 @@ PlanDecision solve_outcome(const RadiositySolution& s, const SolveOptions& optio
 // at texel resolution. Adds the indirect light to result.direct into result.irradiance and fills
 // the report's solve figures and energy balance.
 void interreflect(const Elements& elements, const Surface& surface, const RayTracer& tracer, const BakeOptions& options,
-                  const EffectPlan& plan, double punctual_power, Progress& progress,
+                  const EffectPlan& plan, double punctual_power, const FiniteCheckContext& checked, Progress& progress,
                   const PreviewCallback& on_preview, BakeResult& result) {
   BakeReport& report = result.report;
   InterreflectionObserver observer;
@@ -97,12 +98,14 @@ void interreflect(const Elements& elements, const Surface& surface, const RayTra
   malloc_trim(0);
   const Patches& patches = light_between.patches;
   const RadiositySolution& solution = light_between.solution;
+  check_patches("the radiosity solve", patches, light_between.transport, solution.exitance, checked);
   GatherStats gather_stats;
   StageClock clock(report.stage_times);
   result.irradiance = clock.run("final gather", [&] {
     return gather_indirect(elements, patches, surface, tracer, solution.exitance, options.gather_rays, options.seed,
                            progress, &gather_stats);
   });
+  check_element_values("the final gather", result.irradiance, checked, patches.patch_of_element);
   for (size_t i = 0; i < elements.size(); ++i) result.irradiance[i] += result.direct[i];
   report.balance = energy_balance(elements, patches, light_between.transport, solution.exitance, punctual_power,
                                   result.irradiance);
@@ -170,12 +173,14 @@ BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& optio
     result.direct[i] += punctual[i];
   }
   punctual = {};
+  const FiniteCheckContext checked{scene, surface, elements};
+  check_element_values("direct light", result.direct, checked);
 
   report.plan = plan.decisions;
   report.warnings = plan.warnings;
   const size_t n = elements.size();
   if (plan.interreflection) {
-    interreflect(elements, surface, *tracer, options, plan, punctual_power, progress, on_preview, result);
+    interreflect(elements, surface, *tracer, options, plan, punctual_power, checked, progress, on_preview, result);
   } else {
     result.irradiance = result.direct;
     result.patch_of_element.assign(n, UINT32_MAX);
@@ -187,6 +192,7 @@ BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& optio
   result.pages = clock.run("dilation", [&] { return compose_pages(elements, stored, surface.pages); });
   result.vertex_values =
       clock.run("vertex values", [&] { return vertex_values(elements, surface, atlas, result.pages, stored); });
+  check_vertex_values(result.vertex_values, scene);
 
   for (const AtlasPage& p : surface.pages) report.page_texels += size_t(p.width) * p.height;
   report.elements = n;

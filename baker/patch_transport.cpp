@@ -64,6 +64,15 @@ namespace {
 // G = A F is made symmetric, then scaled as D G D (Knight's symmetric Sinkhorn) until every row
 // again sums to what its rays measured landing. Rows and columns then both add up, so light is
 // conserved and a furnace comes out uniform.
+//
+// Sampled rows do not always admit such a scaling: a small patch in a crevice whose every ray
+// lands on a large neighbour, which in turn sent almost none of its rays back, asks for more
+// exchange between the two than the neighbour's row can hold. The scaling then runs off to 0 and
+// infinity until it overflows (a CAD engine baked to NaN that way). So the scale factors are kept
+// within kMaxScale of one, and a row they would still leave summing to more than it measured is
+// scaled down to it: such a pair stays slightly unreciprocal, but no light is created.
+constexpr double kMaxScale = 64;
+
 void balance_reciprocity(const Patches& patches, std::vector<std::vector<std::pair<uint32_t, float>>>& rows) {
   const size_t n = rows.size();  // faces
   auto area = [&](size_t face) { return patches.area[face % patches.size()]; };
@@ -95,14 +104,17 @@ void balance_reciprocity(const Patches& patches, std::vector<std::vector<std::pa
       double r = d[p] * sum;
       if (r <= 0) continue;
       worst = std::max(worst, std::fabs(r / target[p] - 1));
-      d[p] *= std::sqrt(target[p] / r);
+      d[p] = std::clamp(d[p] * std::sqrt(target[p] / r), 1 / kMaxScale, kMaxScale);
     }
     if (worst < 1e-7) break;
   }
   for (size_t p = 0; p < n; ++p) {
     rows[p].clear();
     if (target[p] <= 0 || area(p) <= 0) continue;
-    for (auto [q, v] : g[p]) rows[p].emplace_back(q, float(d[p] * v * d[q] / area(p)));
+    double sum = 0;
+    for (auto [q, v] : g[p]) sum += d[p] * v * d[q];
+    const double excess = sum > target[p] * (1 + 1e-6) ? sum / target[p] : 1.0;  // over the convergence tolerance
+    for (auto [q, v] : g[p]) rows[p].emplace_back(q, float(d[p] * v * d[q] / excess / area(p)));
   }
 }
 
