@@ -154,6 +154,8 @@ BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& optio
     place_samples(elements, surface, *tracer, options.seed, progress);
     return 0;
   });
+  const FiniteCheckContext checked{scene, surface, elements};
+  check_elements(checked);
   if (std::none_of(elements.flags.begin(), elements.flags.end(), [](uint8_t f) { return !(f & kBuried); }))
     throw InputError("no lightmap texel covers a visible surface: raise the texel density or the page size");
 
@@ -173,7 +175,6 @@ BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& optio
     result.direct[i] += punctual[i];
   }
   punctual = {};
-  const FiniteCheckContext checked{scene, surface, elements};
   check_element_values("direct light", result.direct, checked);
 
   report.plan = plan.decisions;

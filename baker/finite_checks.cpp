@@ -33,6 +33,13 @@ std::string patch_text(const FiniteCheckContext& where, const Patches& patches, 
 
 }  // namespace
 
+void check_elements(const FiniteCheckContext& where) {
+  const Elements& e = where.elements;
+  for (size_t i = 0; i < e.size(); ++i)
+    if (!is_finite(e.position[i]) || !std::isfinite(e.area[i]) || !finite(e.reflectance[i]) || !finite(e.emission[i]))
+      fail("elements", "the position, area or material of " + element_text(where, i));
+}
+
 void check_element_values(const char* stage, const std::vector<Rgb>& values, const FiniteCheckContext& where,
                           const std::vector<uint32_t>& patch_of_element) {
   for (size_t i = 0; i < values.size(); ++i) {

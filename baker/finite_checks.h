@@ -22,6 +22,9 @@ struct FiniteCheckContext {
   const Elements& elements;
 };
 
+// The elements themselves: sample point, area, reflectance and emission.
+void check_elements(const FiniteCheckContext& where);
+
 // Per-element values (irradiance, direct light). `patch_of_element` may be empty.
 void check_element_values(const char* stage, const std::vector<Rgb>& values, const FiniteCheckContext& where,
                           const std::vector<uint32_t>& patch_of_element = {});

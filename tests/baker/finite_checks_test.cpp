@@ -62,5 +62,13 @@ TEST(FiniteChecks, AnInfiniteVertexValueIsStoppedAndFiniteValuesPass) {
   EXPECT_NE(message_of([&] { check_vertex_values(vertices, q.scene); }).find("vertex 1 of"), std::string::npos);
 }
 
+TEST(FiniteChecks, AnInfiniteEmissionIsStoppedWhereTheElementsAreMade) {
+  Quad q;
+  EXPECT_NO_THROW(check_elements({q.scene, q.surface, q.elements}));
+  q.elements.emission[0].x = INFINITY;
+  const std::string text = message_of([&] { check_elements({q.scene, q.surface, q.elements}); });
+  EXPECT_NE(text.find("after elements: the position, area or material of element 0"), std::string::npos) << text;
+}
+
 }  // namespace
 }  // namespace radbake
