@@ -81,7 +81,7 @@ TEST_P(CliBadInput, ExitsTwoWithAClearLineAndWritesNothing) {
 
 INSTANTIATE_TEST_SUITE_P(
     Fixtures, CliBadInput,
-    ::testing::Values(std::make_pair("invalid_json.gltf", "parse error"),
+    ::testing::Values(std::make_pair("invalid_json.gltf", "not valid JSON"),
                       std::make_pair("missing_buffer.gltf", "missing_buffer.bin"),
                       std::make_pair("index_out_of_range.gltf", "out of range"),
                       std::make_pair("nan_position.gltf", "non-finite"),
