@@ -15,9 +15,9 @@ namespace {
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 
-// A decoded image holds 4 channels; the material sampler keeps float RGB mip levels beside them.
+// A decoded image holds 4 channels of 8 or 16 bits, twice: in tinygltf's model and in the Scene.
 constexpr uint64_t kMaxImagePixels = uint64_t(1) << 26;  // 8192 x 8192
-constexpr uint64_t kSamplerBytesPerPixel = 16;
+constexpr uint64_t kDecodedCopies = 2;
 
 int hex_value(char c) {
   if (c >= '0' && c <= '9') return c - '0';
@@ -207,7 +207,7 @@ bool load_image(tinygltf::Image* image, const int index, std::string*, std::stri
     return false;
   }
   const bool sixteen_bit = size >= 25 && bytes[0] == 0x89 && bytes[24] == 16;
-  access.estimate->data_bytes += width * height * (4 * (sixteen_bit ? 2 : 1) + kSamplerBytesPerPixel);
+  access.estimate->data_bytes += kDecodedCopies * width * height * 4 * (sixteen_bit ? 2 : 1);
   try {
     check_budget(*access.estimate, LoadOptions{false, UINT64_MAX, access.max_memory_bytes}, access.file);
   } catch (const InputError& e) {

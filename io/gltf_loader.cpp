@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -158,8 +159,10 @@ class SceneBuilder {
   // Depth first with a stack of its own: a chain of 100,000 nodes is a valid file. check_document
   // has made the nodes trees (one parent each), so every node is reached once.
   void visit_nodes() {
+    // Pushed in reverse, so nodes are reached in the file's order, as the writer and goldens expect.
     std::vector<std::pair<int, Mat4>> stack;
-    for (int root : scene_roots()) stack.push_back({root, Mat4{}});
+    const std::vector<int> roots = scene_roots();
+    for (auto root = roots.rbegin(); root != roots.rend(); ++root) stack.push_back({*root, Mat4{}});
     while (!stack.empty()) {
       const auto [index, parent] = stack.back();
       stack.pop_back();
@@ -180,9 +183,10 @@ class SceneBuilder {
   // A world position radbake can bake: finite, and within kMaxCoordinate where floats still
   // resolve a room and Embree's bounds hold.
   void check_placed(Vec3 p, const std::string& pointer, const std::string& what) const {
-    if (!is_finite(p) || std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)}) > kMaxCoordinate)
-      refuse(file_, pointer, what + " lands at (" + std::to_string(p.x) + ", " + std::to_string(p.y) + ", " +
-                                 std::to_string(p.z) + "), beyond the 1e7 m radbake bakes");
+    if (is_finite(p) && std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)}) <= kMaxCoordinate) return;
+    char at[96];
+    std::snprintf(at, sizeof at, "(%g, %g, %g)", p.x, p.y, p.z);
+    refuse(file_, pointer, what + " lands at " + at + " m, beyond the 1e7 m radbake bakes");
   }
 
   std::string describe_node(int index) const {
