@@ -10,11 +10,12 @@
 namespace radbake {
 namespace {
 
-// Measured on this project's machine (README, "Measured"): radbake holds 129 MB before it reads a
-// scene, and a bake's peak grows by about these per triangle and vertex after instancing (scene,
-// atlas and half-edge mesh, Embree's BVH, the surface tables) and per lightmap page texel
-// (elements, patches, pages, dilation). Rounded up: the estimate is meant to refuse what cannot
-// fit, not to predict to the megabyte.
+// radbake holds 129 MB before it reads a scene (README, "Measured"). The rest are upper estimates
+// of what a bake's peak grows by: per triangle and vertex after instancing (scene, atlas and
+// half-edge mesh, Embree's BVH, the surface tables) and per lightmap page texel (measured 130
+// bytes for a floor filling a 1024-texel page, draft quality; the README's million-texel bench
+// peaks at 153 a covered texel). They are meant to refuse what cannot fit, not to predict to the
+// megabyte.
 constexpr uint64_t kBaselineBytes = uint64_t(130) << 20;
 constexpr uint64_t kBytesPerTriangle = 600;
 constexpr uint64_t kBytesPerVertex = 150;
