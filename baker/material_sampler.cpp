@@ -14,6 +14,16 @@ float srgb_to_linear(float c) {
   return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
 }
 
+// A texel coordinate far outside the texture (a UV of 1e6, a texture transform scale of 1e19) would
+// overflow the int it is floored to. Any whole number of mirror periods (two texture widths) away
+// every wrap mode reads the same texel, and fmod is exact, so only the fraction that matters is kept.
+float within_int_range(float f, int n, Wrap mode) {
+  if (mode == Wrap::ClampToEdge) return std::clamp(f, -1.0f, float(n));
+  const double period = 2.0 * n;
+  double r = std::fmod(double(f), period);
+  return float(r < 0 ? r + period : r);
+}
+
 int wrap_index(int i, int n, Wrap mode) {
   switch (mode) {
     case Wrap::ClampToEdge:
@@ -112,6 +122,8 @@ Vec3 MaterialSampler::sample(const TextureRef& ref, int texture, uint32_t triang
 
   float fx = p.x * L.width - 0.5f, fy = p.y * L.height - 0.5f;
   if (!std::isfinite(fx) || !std::isfinite(fy)) return {1, 1, 1};
+  fx = within_int_range(fx, L.width, ref.wrap_s);
+  fy = within_int_range(fy, L.height, ref.wrap_t);
   int x0 = int(std::floor(fx)), y0 = int(std::floor(fy));
   float tx = fx - x0, ty = fy - y0;
   auto at = [&](int x, int y) {

@@ -1,5 +1,6 @@
 #include "cli/command_line.h"
 
+#include <cctype>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -90,6 +91,13 @@ for radiosity) and the 50th, 95th and 99th percentiles of the relative texel err
     the mean of A over the compared texels, so dark texels are not divided by almost nothing;
   - relative RMSE = RMS of the errors / the reference level; percentiles are by nearest rank.
 Thresholds apply to the all-pages numbers.
+
+reading options (bake and uv):
+  --allow-external-files  read images and buffers whose URIs lead out of the scene's folder
+                          (absolute paths, ../, links); refused by default
+  --max-memory SIZE|auto  refuse a scene whose bake is estimated to need more memory; SIZE in
+                          bytes or with K, M, G (x1024) (default auto: half the physical memory)
+  --max-triangles N       refuse a scene with more triangles after instancing (default 20000000)
 
 lightmap UV options (bake and uv):
   --density N             lightmap texels per metre (default: auto, the most that fits one page)
@@ -182,6 +190,25 @@ void atlas_options(AtlasOptions& a, std::map<std::string, Setter>& with_value, s
   flags["--fit-page"] = [&] { a.fit_one_page = true; };
 }
 
+// What a scene file may make radbake read and hold; `bake` and `uv` share them.
+void load_options(LoadOptions& l, std::map<std::string, Setter>& with_value, std::map<std::string, Flag>& flags) {
+  flags["--allow-external-files"] = [&] { l.allow_external_files = true; };
+  with_value["--max-triangles"] = [&](const std::string& v) {
+    l.max_triangles = uint64_t(parse_integer("--max-triangles", v, 1, 1L << 40));
+  };
+  with_value["--max-memory"] = [&](const std::string& v) {
+    if (v == "auto") {
+      l.max_memory_bytes = 0;
+      return;
+    }
+    const std::string units = "KMGT";
+    const size_t unit = v.empty() ? std::string::npos : units.find(char(std::toupper(static_cast<unsigned char>(v.back()))));
+    const double scale = unit == std::string::npos ? 1 : std::pow(1024.0, double(unit + 1));
+    const std::string digits = unit == std::string::npos ? v : v.substr(0, v.size() - 1);
+    l.max_memory_bytes = uint64_t(parse_number("--max-memory", digits, 1, 1e15 / scale) * scale);
+  };
+}
+
 // Reads `args` from position 1: options from the two tables, positional arguments to `positional`.
 void parse_options(const std::vector<std::string>& args, const std::map<std::string, Setter>& with_value,
                    const std::map<std::string, Flag>& flags, const std::function<void(const std::string&)>& positional,
@@ -223,6 +250,7 @@ void parse_uv(const std::vector<std::string>& args, CommandLine& cl) {
   std::map<std::string, Setter> with_value;
   std::map<std::string, Flag> flags;
   atlas_options(u.atlas, with_value, flags);
+  load_options(u.load, with_value, flags);
   with_value["--evaluate-texcoord"] = [&](const std::string& v) { u.evaluate_texcoord = int(parse_integer("--evaluate-texcoord", v, 0, 7)); };
   flags["--stats"] = [] {};  // statistics are what `uv` prints; the flag is accepted for clarity
   flags["--json"] = [&] { u.json = true; };
@@ -336,6 +364,7 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
       {"--simulate-everything", [&] { b.bake.plan.simulate_everything = true; }},
   };
   atlas_options(b.atlas, with_value, flags);
+  load_options(b.load, with_value, flags);
   // The preset goes first wherever it stands, so options given with it override it.
   std::string quality = "preview";
   for (size_t i = 1; i + 1 < args.size(); ++i)
@@ -395,6 +424,9 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
       {"lightmap-uvs", b.atlas.input_uvs == InputUvPolicy::KeepValid ? "keep-valid"
                        : b.atlas.input_uvs == InputUvPolicy::KeepAll ? "keep" : "generate"},
       {"chart-angle", number(b.atlas.max_chart_normal_deviation)},
+      {"allow-external-files", b.load.allow_external_files ? "yes" : "no"},
+      {"max-memory", b.load.max_memory_bytes ? std::to_string(b.load.max_memory_bytes) : "auto"},
+      {"max-triangles", std::to_string(b.load.max_triangles)},
   };
   return cl;
 }

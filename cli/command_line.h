@@ -8,6 +8,7 @@
 
 #include "baker/bake.h"
 #include "baker/lightmap_difference.h"
+#include "io/gltf.h"
 #include "uv/atlas.h"
 
 namespace radbake {
@@ -18,6 +19,7 @@ struct UsageError : std::runtime_error {
 
 struct BakeCommand {
   std::string input, output;
+  LoadOptions load;
   AtlasOptions atlas;
   BakeOptions bake;
   float png_scale = 0;  // 0: automatic
@@ -29,6 +31,7 @@ struct BakeCommand {
 // `radbake uv`: the lightmap atlas alone, and what it is worth.
 struct UvCommand {
   std::string input;
+  LoadOptions load;
   AtlasOptions atlas;
   bool json = false;           // machine-readable statistics
   int evaluate_texcoord = -1;  // measure the input's TEXCOORD_n as one page instead of unwrapping

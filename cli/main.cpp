@@ -72,7 +72,8 @@ int run_bake(const radbake::BakeCommand& cmd) {
   run.options = cmd.effective;
 
   auto t = std::chrono::steady_clock::now();
-  LoadedScene loaded = load_gltf(cmd.input);
+  LoadedScene loaded = load_gltf(cmd.input, cmd.load);
+  check_bake_budget(loaded, cmd.atlas, cmd.load, cmd.input);
   run.io_times.push_back({"load", seconds_since(t)});
   // Planned before anything is written or unwrapped, so a scene with no light fails at once.
   const EffectPlan plan = plan_effects(loaded.scene, cmd.bake.plan);
@@ -175,7 +176,8 @@ void print_stats(const radbake::Atlas& atlas, const radbake::UvCommand& cmd, dou
 int run_uv(const radbake::UvCommand& cmd) {
   using namespace radbake;
   auto t = std::chrono::steady_clock::now();
-  LoadedScene loaded = load_gltf(cmd.input);
+  LoadedScene loaded = load_gltf(cmd.input, cmd.load);
+  check_bake_budget(loaded, cmd.atlas, cmd.load, cmd.input);
   double load_seconds = seconds_since(t);
   std::vector<MeshView> views = mesh_views(loaded.scene);
   if (cmd.evaluate_texcoord < 0) {

@@ -1,16 +1,24 @@
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <set>
-#include <sstream>
 
 #include "baker/errors.h"
 #include "io/gltf_source.h"
 
 namespace radbake {
 namespace {
+
+// tinygltf turns extras and extensions into its Value recursively, and the writer's JSON
+// serializer recurses too: deeper documents are refused before any parser sees them. glTF itself
+// nests about ten levels.
+constexpr size_t kMaxJsonDepth = 128;
+// World coordinates in metres. Float positions beyond this resolve no better than a metre, and
+// Embree refuses bounds near 1.8e19; ten thousand kilometres holds a planet.
+constexpr double kMaxCoordinate = 1e7;
 
 // Extensions radbake fully honours when a file marks them required.
 const std::set<std::string> kSupportedRequired = {"KHR_lights_punctual", "KHR_materials_emissive_strength",
@@ -28,23 +36,51 @@ std::vector<uint8_t> read_file(const std::string& path) {
   return std::vector<uint8_t>(std::istreambuf_iterator<char>(in), {});
 }
 
+// Counted without recursion, so the count itself cannot overflow the stack.
+void check_nesting(const std::string& text, const std::string& file) {
+  size_t depth = 0;
+  bool in_string = false;
+  for (size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (in_string) {
+      if (c == '\\') ++i;
+      else if (c == '"') in_string = false;
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '{' || c == '[') {
+      if (++depth > kMaxJsonDepth)
+        throw InputError(file + ": JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels (at byte " +
+                         std::to_string(i) + ")");
+    } else if ((c == '}' || c == ']') && depth > 0) {
+      --depth;
+    }
+  }
+}
+
 uint32_t read_u32(const std::vector<uint8_t>& b, size_t at) {
   uint32_t v;
   std::memcpy(&v, b.data() + at, 4);
   return v;
 }
 
-// The JSON and BIN chunks of a .glb, kept so the writer can copy them untouched.
-void split_glb(const std::vector<uint8_t>& bytes, GltfSource& src) {
-  size_t at = 12;
-  while (at + 8 <= bytes.size()) {
-    uint32_t length = read_u32(bytes, at), type = read_u32(bytes, at + 4);
-    if (length > bytes.size() - at - 8) break;
-    if (type == 0x4E4F534Au) src.json_text.assign(bytes.begin() + long(at + 8), bytes.begin() + long(at + 8 + length));
-    if (type == 0x004E4942u && src.glb_bin.empty())
+// The JSON and BIN chunks of a .glb (glTF 2.0 section 4.4), kept so the writer can copy them
+// untouched. The JSON chunk comes first; chunks of other types are skipped.
+void split_glb(const std::vector<uint8_t>& bytes, const std::string& file, GltfSource& src) {
+  auto bad = [&](const std::string& what) { throw InputError(file + ": not a valid .glb: " + what); };
+  if (bytes.size() < 20) bad("shorter than its header");
+  if (read_u32(bytes, 4) != 2) bad("version " + std::to_string(read_u32(bytes, 4)) + ", not 2");
+  if (read_u32(bytes, 8) > bytes.size()) bad("its header claims more bytes than the file has");
+  const size_t total = read_u32(bytes, 8);
+  for (size_t at = 12; at + 8 <= total;) {
+    const uint32_t length = read_u32(bytes, at), type = read_u32(bytes, at + 4);
+    if (length > total - at - 8) bad("chunk at byte " + std::to_string(at) + " runs past the end of the file");
+    if (at == 12 && type != 0x4E4F534Au) bad("the first chunk is not JSON");
+    if (type == 0x4E4F534Au && at == 12) src.json_text.assign(bytes.begin() + long(at + 8), bytes.begin() + long(at + 8 + length));
+    if (type == 0x004E4942u && at > 12 && src.glb_bin.empty())
       src.glb_bin.assign(bytes.begin() + long(at + 8), bytes.begin() + long(at + 8 + length));
-    at += 8 + ((length + 3) & ~3u);
+    at += 8 + ((size_t(length) + 3) & ~size_t(3));
   }
+  if (src.json_text.empty()) bad("no JSON chunk");
 }
 
 Mat4 local_transform(const tinygltf::Node& node) {
@@ -82,76 +118,92 @@ Wrap wrap_mode(int gl) {
 
 class SceneBuilder {
  public:
-  SceneBuilder(const tinygltf::Model& model, Scene& scene) : model_(model), scene_(scene) {}
+  SceneBuilder(const tinygltf::Model& model, Scene& scene, const std::string& file)
+      : model_(model), scene_(scene), file_(file) {}
 
   void build() {
     check_required_extensions();
     convert_images();
     convert_materials();
-    for (int root : scene_roots()) visit(root, Mat4{}, 0);
+    visit_nodes();
     scene_.summary.nodes = model_.nodes.size();
     scene_.summary.meshes = model_.meshes.size();
     scene_.summary.materials = model_.materials.size();
     scene_.summary.textures = model_.textures.size();
     scene_.summary.lights = scene_.lights.size();
     for (const MeshInstance& inst : scene_.instances) scene_.summary.triangles += inst.triangle_count();
-    if (scene_.summary.triangles == 0) throw InputError("the scene has no triangles to bake");
+    if (scene_.summary.triangles == 0) refuse(file_, "/", "the scene has no triangles to bake");
   }
 
  private:
   void check_required_extensions() {
     for (const std::string& ext : model_.extensionsRequired)
       if (!kSupportedRequired.count(ext))
-        throw InputError("the file requires extension " + ext + ", which radbake does not support");
+        refuse(file_, "/extensionsRequired", "the file requires extension " + excerpt(ext) + ", which radbake does not support");
   }
 
   std::vector<int> scene_roots() const {
     if (!model_.scenes.empty()) {
-      int s = model_.defaultScene >= 0 ? model_.defaultScene : 0;
-      if (size_t(s) >= model_.scenes.size()) throw InputError("the default scene " + std::to_string(s) + " does not exist");
-      return model_.scenes[size_t(s)].nodes;
+      return model_.scenes[size_t(std::max(model_.defaultScene, 0))].nodes;
     }
     // No scenes: every node that is nobody's child is a root.
     std::vector<char> is_child(model_.nodes.size(), 0);
     for (const tinygltf::Node& n : model_.nodes)
-      for (int c : n.children)
-        if (c >= 0 && size_t(c) < is_child.size()) is_child[size_t(c)] = 1;
+      for (int c : n.children) is_child[size_t(c)] = 1;
     std::vector<int> roots;
     for (size_t i = 0; i < model_.nodes.size(); ++i)
       if (!is_child[i]) roots.push_back(int(i));
     return roots;
   }
 
-  void visit(int index, const Mat4& parent, size_t depth) {
-    if (index < 0 || size_t(index) >= model_.nodes.size())
-      throw InputError("node " + std::to_string(index) + " does not exist");
-    if (depth > model_.nodes.size()) throw InputError("the node hierarchy contains a cycle");
-    const tinygltf::Node& node = model_.nodes[size_t(index)];
-    Mat4 world = parent * local_transform(node);
-    for (int i = 0; i < 16; ++i)
-      if (!std::isfinite(world.m[i])) throw InputError("node " + describe_node(index) + " has a non-finite transform");
-    if (node.mesh >= 0) add_mesh(index, world);
-    auto light = node.extensions.find("KHR_lights_punctual");
-    if (light != node.extensions.end() && light->second.Has("light"))
-      add_light(light->second.Get("light").GetNumberAsInt(), world);
-    for (int child : node.children) visit(child, world, depth + 1);
+  // Depth first with a stack of its own: a chain of 100,000 nodes is a valid file. check_document
+  // has made the nodes trees (one parent each), so every node is reached once.
+  void visit_nodes() {
+    // Pushed in reverse, so nodes are reached in the file's order, as the writer and goldens expect.
+    std::vector<std::pair<int, Mat4>> stack;
+    const std::vector<int> roots = scene_roots();
+    for (auto root = roots.rbegin(); root != roots.rend(); ++root) stack.push_back({*root, Mat4{}});
+    while (!stack.empty()) {
+      const auto [index, parent] = stack.back();
+      stack.pop_back();
+      const tinygltf::Node& node = model_.nodes[size_t(index)];
+      const Mat4 world = parent * local_transform(node);
+      for (int i = 0; i < 16; ++i)
+        if (!std::isfinite(world.m[i])) refuse(file_, node_pointer(index), "its world transform is not finite");
+      if (node.mesh >= 0) add_mesh(index, world);
+      auto light = node.extensions.find("KHR_lights_punctual");
+      if (light != node.extensions.end() && light->second.Has("light"))
+        add_light(light->second.Get("light").GetNumberAsInt(), index, world);
+      for (auto child = node.children.rbegin(); child != node.children.rend(); ++child) stack.push_back({*child, world});
+    }
+  }
+
+  static std::string node_pointer(int index) { return "/nodes/" + std::to_string(index); }
+
+  // A world position radbake can bake: finite, and within kMaxCoordinate where floats still
+  // resolve a room and Embree's bounds hold.
+  void check_placed(Vec3 p, const std::string& pointer, const std::string& what) const {
+    if (is_finite(p) && std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)}) <= kMaxCoordinate) return;
+    char at[96];
+    std::snprintf(at, sizeof at, "(%g, %g, %g)", p.x, p.y, p.z);
+    refuse(file_, pointer, what + " lands at " + at + " m, beyond the 1e7 m radbake bakes");
   }
 
   std::string describe_node(int index) const {
     const std::string& name = model_.nodes[size_t(index)].name;
-    return name.empty() ? std::to_string(index) : "'" + name + "'";
+    return name.empty() ? std::to_string(index) : "'" + excerpt(name) + "'";
   }
 
   void add_mesh(int node_index, const Mat4& world) {
     const tinygltf::Node& node = model_.nodes[size_t(node_index)];
-    if (size_t(node.mesh) >= model_.meshes.size()) throw InputError("node " + describe_node(node_index) + " uses a missing mesh");
     const tinygltf::Mesh& mesh = model_.meshes[size_t(node.mesh)];
     if (node.skin >= 0)
       scene_.warnings.push_back("node " + describe_node(node_index) + " is skinned; it is baked in its node transform, not posed");
     for (size_t k = 0; k < mesh.primitives.size(); ++k) {
       const tinygltf::Primitive& prim = mesh.primitives[k];
       ++scene_.summary.primitives;
-      std::string where = "mesh '" + (mesh.name.empty() ? std::to_string(node.mesh) : mesh.name) + "' primitive " + std::to_string(k);
+      std::string where = "mesh '" + (mesh.name.empty() ? std::to_string(node.mesh) : excerpt(mesh.name)) + "' primitive " + std::to_string(k);
+      const std::string pointer = "/meshes/" + std::to_string(node.mesh) + "/primitives/" + std::to_string(k);
       int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
       if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN) {
         ++scene_.summary.skipped_primitives;
@@ -159,39 +211,37 @@ class SceneBuilder {
         continue;
       }
       auto pos = prim.attributes.find("POSITION");
-      if (pos == prim.attributes.end()) throw InputError(where + " has no POSITION attribute");
+      if (pos == prim.attributes.end()) refuse(file_, pointer + "/attributes", "has no POSITION");
       MeshInstance inst;
-      inst.name = (node.name.empty() ? "node " + std::to_string(node_index) : node.name) + " / " + where;
+      inst.name = (node.name.empty() ? "node " + std::to_string(node_index) : excerpt(node.name)) + " / " + where;
       inst.node = node_index;
       inst.mesh = node.mesh;
       inst.primitive = int(k);
       inst.mirrored = world.determinant3() < 0;
-      if (prim.material >= int(model_.materials.size())) throw InputError(where + " uses a missing material");
       inst.material = prim.material;
 
       int components;
       std::vector<float> p = accessor_floats(model_, pos->second, &components);
-      if (components != 3) throw InputError(where + ": POSITION is not VEC3");
       const size_t vertex_count = p.size() / 3;
       inst.positions.resize(vertex_count);
       for (size_t v = 0; v < vertex_count; ++v) {
         Vec3 local{p[3 * v], p[3 * v + 1], p[3 * v + 2]};
-        if (!is_finite(local)) throw InputError(where + ": POSITION has a non-finite value at vertex " + std::to_string(v));
+        if (!is_finite(local))
+          refuse(file_, pointer + "/attributes/POSITION", "has a non-finite value at vertex " + std::to_string(v));
         inst.positions[v] = world.transform_point(local);
-        if (!is_finite(inst.positions[v]))
-          throw InputError(where + ": vertex " + std::to_string(v) + " is not finite after its node transform");
+        check_placed(inst.positions[v], node_pointer(node_index), "vertex " + std::to_string(v) + " of its mesh");
       }
       read_normals(prim, world, inst, where);
-      read_texcoords(prim, inst, where);
-      read_colors(prim, inst, where);
+      read_texcoords(prim, inst);
+      read_colors(prim, inst);
 
       std::vector<uint32_t> indices;
       if (prim.indices >= 0) {
         indices = accessor_indices(model_, prim.indices);
         for (size_t i = 0; i < indices.size(); ++i)
           if (indices[i] >= vertex_count)
-            throw InputError(where + ": index " + std::to_string(indices[i]) + " at position " + std::to_string(i) +
-                             " is out of range (" + std::to_string(vertex_count) + " vertices)");
+            refuse(file_, pointer + "/indices", "index " + std::to_string(indices[i]) + " at position " + std::to_string(i) +
+                                                    " is out of range (" + std::to_string(vertex_count) + " vertices)");
       } else {
         indices.resize(vertex_count);
         for (size_t i = 0; i < vertex_count; ++i) indices[i] = uint32_t(i);
@@ -221,7 +271,6 @@ class SceneBuilder {
     if (it == prim.attributes.end()) return;
     int components;
     std::vector<float> n = accessor_floats(model_, it->second, &components);
-    if (components != 3 || n.size() / 3 != inst.positions.size()) throw InputError(where + ": NORMAL does not match POSITION");
     inst.normals.resize(inst.positions.size());
     for (size_t v = 0; v < inst.normals.size(); ++v) {
       Vec3 w = normalize(world.transform_normal({n[3 * v], n[3 * v + 1], n[3 * v + 2]}));
@@ -234,14 +283,13 @@ class SceneBuilder {
     }
   }
 
-  void read_texcoords(const tinygltf::Primitive& prim, MeshInstance& inst, const std::string& where) {
+  // check_document has matched each attribute's type and count to POSITION.
+  void read_texcoords(const tinygltf::Primitive& prim, MeshInstance& inst) {
     for (int set = 0; set < 8; ++set) {
       auto it = prim.attributes.find("TEXCOORD_" + std::to_string(set));
       if (it == prim.attributes.end()) continue;
       int components;
       std::vector<float> uv = accessor_floats(model_, it->second, &components);
-      if (components != 2 || uv.size() / 2 != inst.positions.size())
-        throw InputError(where + ": TEXCOORD_" + std::to_string(set) + " does not match POSITION");
       inst.texcoords.resize(size_t(set) + 1);
       auto& out = inst.texcoords[size_t(set)];
       out.resize(inst.positions.size());
@@ -249,50 +297,42 @@ class SceneBuilder {
     }
   }
 
-  void read_colors(const tinygltf::Primitive& prim, MeshInstance& inst, const std::string& where) {
+  void read_colors(const tinygltf::Primitive& prim, MeshInstance& inst) {
     auto it = prim.attributes.find("COLOR_0");
     if (it == prim.attributes.end()) return;
     int components;
     std::vector<float> c = accessor_floats(model_, it->second, &components);
-    if ((components != 3 && components != 4) || c.size() / size_t(components) != inst.positions.size())
-      throw InputError(where + ": COLOR_0 does not match POSITION");
     inst.colors.resize(inst.positions.size());
     for (size_t v = 0; v < inst.colors.size(); ++v)
       inst.colors[v] = {c[v * size_t(components)], c[v * size_t(components) + 1], c[v * size_t(components) + 2]};
   }
 
-  void add_light(int index, const Mat4& world) {
-    if (index < 0 || size_t(index) >= model_.lights.size())
-      throw InputError("a node refers to KHR_lights_punctual light " + std::to_string(index) + ", which does not exist");
+  // check_document has checked the light's type and bounded its numbers.
+  void add_light(int index, int node_index, const Mat4& world) {
     const tinygltf::Light& in = model_.lights[size_t(index)];
     Light light;
-    light.name = in.name.empty() ? "light " + std::to_string(index) : in.name;
+    light.name = in.name.empty() ? "light " + std::to_string(index) : excerpt(in.name);
     if (in.type == "point") light.type = LightType::Point;
     else if (in.type == "spot") light.type = LightType::Spot;
-    else if (in.type == "directional") light.type = LightType::Directional;
-    else throw InputError("light '" + light.name + "' has unknown type '" + in.type + "'");
+    else light.type = LightType::Directional;
     if (in.color.size() == 3) light.color = {float(in.color[0]), float(in.color[1]), float(in.color[2])};
     light.intensity = float(in.intensity);
     light.range = float(in.range);
     light.inner_cone_angle = float(in.spot.innerConeAngle);
     light.outer_cone_angle = float(in.spot.outerConeAngle);
-    if (!std::isfinite(light.intensity) || light.intensity < 0 || !is_finite(light.color) ||
-        std::min({light.color.x, light.color.y, light.color.z}) < 0)
-      throw InputError("light '" + light.name + "' has a negative or non-finite intensity or colour");
-    if (!(light.range >= 0)) throw InputError("light '" + light.name + "' has a negative range");
     light.position = world.transform_point({0, 0, 0});
     light.direction = normalize(world.transform_direction({0, 0, -1}));
+    if (light.type != LightType::Directional) check_placed(light.position, node_pointer(node_index), "its light");
     if (light.type != LightType::Point && !(length(light.direction) > 0.5f))
-      throw InputError("light '" + light.name + "' has a degenerate direction (its node scales to zero)");
+      refuse(file_, node_pointer(node_index), "light '" + light.name + "' has a degenerate direction (its node scales to zero)");
     scene_.lights.push_back(light);
   }
 
   TextureRef texture_ref(int texture_index, int tex_coord, const tinygltf::ExtensionMap& extensions) {
     TextureRef ref;
     if (texture_index < 0) return ref;
-    if (size_t(texture_index) >= model_.textures.size()) throw InputError("a material uses missing texture " + std::to_string(texture_index));
     const tinygltf::Texture& tex = model_.textures[size_t(texture_index)];
-    if (tex.source < 0 || size_t(tex.source) >= model_.images.size() || !usable_image_[size_t(tex.source)]) return ref;
+    if (tex.source < 0 || !usable_image_[size_t(tex.source)]) return ref;
     ref.image = tex.source;
     ref.tex_coord = tex_coord;
     if (tex.sampler >= 0 && size_t(tex.sampler) < model_.samplers.size()) {
@@ -317,7 +357,7 @@ class SceneBuilder {
     for (size_t i = 0; i < model_.images.size(); ++i) {
       const tinygltf::Image& in = model_.images[i];
       Image out;
-      out.name = in.name.empty() ? (in.uri.empty() ? "image " + std::to_string(i) : in.uri) : in.name;
+      out.name = in.name.empty() ? (in.uri.empty() ? "image " + std::to_string(i) : excerpt(in.uri)) : excerpt(in.name);
       bool decoded = in.width > 0 && in.height > 0 && in.component == 4 && (in.bits == 8 || in.bits == 16) &&
                      in.image.size() == size_t(in.width) * size_t(in.height) * 4 * size_t(in.bits / 8);
       if (!decoded) {
@@ -377,46 +417,72 @@ class SceneBuilder {
       if (strength != in.extensions.end()) m.emissive_strength = float(number(strength->second, "emissiveStrength", 1.0));
       m.double_sided = in.doubleSided;
       m.unsimulated = unsimulated_features(in);
-      std::string name = in.name.empty() ? "a material" : "material '" + in.name + "'";
-      if (!is_finite(m.base_color) || !is_finite(m.emissive) || !std::isfinite(m.emissive_strength) ||
-          !std::isfinite(m.metallic) || std::min({m.emissive.x, m.emissive.y, m.emissive.z, m.emissive_strength}) < 0)
-        throw InputError(name + " has a non-finite or negative factor");
       scene_.materials.push_back(std::move(m));
     }
   }
 
   const tinygltf::Model& model_;
   Scene& scene_;
+  const std::string& file_;
   std::vector<char> usable_image_;
 };
 
 }  // namespace
 
-LoadedScene load_gltf(const std::string& path) {
+LoadedScene load_gltf(const std::string& path, const LoadOptions& options) {
   namespace fs = std::filesystem;
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) throw InputError(path + ": no such file");
+  if (fs::file_size(path, ec) > 0xffffffffu) throw InputError(path + ": file larger than 4 GiB");
   auto src = std::make_shared<GltfSource>();
   src->path = path;
   src->base_dir = fs::path(path).parent_path().string();
   std::vector<uint8_t> bytes = read_file(path);
   src->binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
-  if (bytes.size() > 0xffffffffu) throw InputError(path + ": file larger than 4 GiB");
+  if (src->binary) split_glb(bytes, path, *src);
+  else src->json_text.assign(bytes.begin(), bytes.end());
+  check_nesting(src->json_text, path);
+
+  ResourceEstimate estimate;
+  FileAccess access;
+  {
+    nlohmann::json doc;
+    try {
+      doc = nlohmann::json::parse(src->json_text);
+    } catch (const nlohmann::json::parse_error& e) {
+      throw InputError(path + ": not valid JSON (syntax error at byte " + std::to_string(e.byte) + ")");
+    }
+    estimate = check_document(doc, path, src->binary ? src->glb_bin.size() : SIZE_MAX);
+    // The file is held as read, as JSON text and as tinygltf's model while loading.
+    estimate.data_bytes += 3 * bytes.size();
+    check_budget(estimate, options, path);
+    access = resolve_files(doc, path, src->base_dir, options.allow_external_files);
+  }
+  access.max_memory_bytes = options.max_memory_bytes;
+  access.estimate = &estimate;
 
   tinygltf::TinyGLTF loader;
+  restrict_file_access(loader, access);
   std::string err, warn;
-  bool ok = src->binary
-                ? loader.LoadBinaryFromMemory(&src->model, &err, &warn, bytes.data(), unsigned(bytes.size()), src->base_dir)
-                : loader.LoadASCIIFromString(&src->model, &err, &warn, reinterpret_cast<const char*>(bytes.data()),
-                                             unsigned(bytes.size()), src->base_dir);
-  if (!ok) throw InputError(path + ": " + one_line(err.empty() ? "not a valid glTF file" : err));
-  if (src->binary) split_glb(bytes, *src);
-  else src->json_text.assign(bytes.begin(), bytes.end());
+  bool ok = false;
+  try {
+    // No base folder: the file callbacks resolve every URI, from the list resolve_files made.
+    ok = src->binary ? loader.LoadBinaryFromMemory(&src->model, &err, &warn, bytes.data(), unsigned(bytes.size()), "")
+                     : loader.LoadASCIIFromString(&src->model, &err, &warn, src->json_text.data(),
+                                                  unsigned(src->json_text.size()), "");
+  } catch (const std::exception&) {
+    ok = false;
+    err = "its parser failed";
+  }
+  if (!access.error.empty()) throw InputError(access.error);
+  if (!ok) throw InputError(path + ": not a glTF file radbake can read (tinygltf: '" + excerpt(one_line(err)) + "')");
+  src->image_files = std::move(access.image_files);
 
   LoadedScene out;
   if (!warn.empty()) out.scene.warnings.push_back(one_line(warn));
-  SceneBuilder(src->model, out.scene).build();
+  SceneBuilder(src->model, out.scene, path).build();
   out.source = std::move(src);
+  out.estimate = estimate;
   return out;
 }
 

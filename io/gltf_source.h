@@ -3,7 +3,11 @@
 
 #include <tiny_gltf.h>
 
+#include <nlohmann/json.hpp>
+
 #include <cstdint>
+#include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -18,7 +22,42 @@ struct GltfSource {
   tinygltf::Model model;
   std::string json_text;          // the JSON document (the JSON chunk of a .glb)
   std::vector<uint8_t> glb_bin;   // the BIN chunk of a .glb
+  std::vector<std::string> image_files;  // per image: the file its URI resolved to, empty if none
 };
+
+// The one shape of every complaint about a file: "FILE: /json/pointer: what is wrong".
+[[noreturn]] void refuse(const std::string& file, const std::string& pointer, const std::string& what);
+
+// A string from the file (a name, a URI) cut short, so a hostile one cannot flood a message.
+std::string excerpt(const std::string& text);
+
+// Checks everything radbake and the writer read from the document (types, indices, ranges,
+// accessors against their bufferViews, bufferViews against their buffers, the node tree, numbers
+// physics multiplies) and estimates what loading it costs, before tinygltf allocates anything.
+// `glb_bin_size` is the BIN chunk's length, or SIZE_MAX when the file is not a .glb.
+ResourceEstimate check_document(const nlohmann::json& doc, const std::string& file, size_t glb_bin_size);
+
+// The external files a document's URIs name, resolved inside the scene's folder: the only files
+// tinygltf is allowed to open (through FileAccess's callbacks) and the writer to copy.
+struct FileAccess {
+  std::map<std::string, std::string> by_uri;   // tinygltf's decoding of a URI -> canonical path
+  std::set<std::string> allowed;               // canonical paths
+  std::vector<std::string> image_files;        // per image, as GltfSource::image_files
+  // Image decoding, checked as tinygltf hands each image over.
+  std::string file;
+  uint64_t max_memory_bytes = 0;
+  ResourceEstimate* estimate = nullptr;
+  std::string error;  // set by a callback that refused; tinygltf only sees "false"
+};
+
+FileAccess resolve_files(const nlohmann::json& doc, const std::string& file, const std::string& base_dir,
+                         bool allow_external_files);
+
+// Points tinygltf's file system and image decoding at `access`, which must outlive the load.
+void restrict_file_access(tinygltf::TinyGLTF& loader, FileAccess& access);
+
+// Throws InputError naming the estimate and the option to raise when it passes a limit.
+void check_budget(const ResourceEstimate& estimate, const LoadOptions& options, const std::string& file);
 
 // Packed elements of an accessor (sparse substitution applied), byteStride removed.
 // Throws InputError when it reads outside its buffer.

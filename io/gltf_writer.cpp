@@ -24,20 +24,6 @@ void write_bytes(const fs::path& path, const uint8_t* data, size_t size) {
   if (!out) throw std::runtime_error("cannot write " + path.string());
 }
 
-std::string uri_decode(const std::string& uri) {
-  std::string out;
-  for (size_t i = 0; i < uri.size(); ++i) {
-    if (uri[i] == '%' && i + 2 < uri.size() && std::isxdigit(static_cast<unsigned char>(uri[i + 1])) &&
-        std::isxdigit(static_cast<unsigned char>(uri[i + 2]))) {
-      out += char(std::stoi(uri.substr(i + 1, 2), nullptr, 16));
-      i += 2;
-    } else {
-      out += uri[i];
-    }
-  }
-  return out;
-}
-
 bool is_data_uri(const std::string& uri) { return uri.rfind("data:", 0) == 0; }
 
 // Appends accessors and their buffer views over one new binary buffer.
@@ -176,17 +162,20 @@ class Writer {
     }
   }
 
+  // Only the files the loader resolved (inside the scene's folder, unless external files were
+  // allowed); an image it did not find keeps its URI and is reported.
   void copy_images() {
     json& images = doc_["images"];
     for (size_t i = 0; i < images.size(); ++i) {
       std::string uri = images[i].value("uri", "");
       if (uri.empty() || is_data_uri(uri)) continue;
-      fs::path from = fs::path(src_.base_dir) / uri_decode(uri);
-      std::string file = name_ + "_image" + std::to_string(i) + fs::path(uri_decode(uri)).extension().string();
+      const fs::path from = src_.image_files[i];
+      std::string file = name_ + "_image" + std::to_string(i) + from.extension().string();
       std::error_code ec;
-      fs::copy_file(from, folder_ / file, fs::copy_options::overwrite_existing, ec);
+      if (from.empty()) ec = std::make_error_code(std::errc::no_such_file_or_directory);
+      else fs::copy_file(from, folder_ / file, fs::copy_options::overwrite_existing, ec);
       if (ec) {
-        out_.warnings.push_back("image '" + uri + "' could not be copied: " + ec.message());
+        out_.warnings.push_back("image '" + excerpt(uri) + "' could not be copied: " + ec.message());
         continue;
       }
       images[i]["uri"] = file;

@@ -81,7 +81,7 @@ TEST_P(CliBadInput, ExitsTwoWithAClearLineAndWritesNothing) {
 
 INSTANTIATE_TEST_SUITE_P(
     Fixtures, CliBadInput,
-    ::testing::Values(std::make_pair("invalid_json.gltf", "parse error"),
+    ::testing::Values(std::make_pair("invalid_json.gltf", "not valid JSON"),
                       std::make_pair("missing_buffer.gltf", "missing_buffer.bin"),
                       std::make_pair("index_out_of_range.gltf", "out of range"),
                       std::make_pair("nan_position.gltf", "non-finite"),
@@ -93,6 +93,91 @@ INSTANTIATE_TEST_SUITE_P(
       std::string name = info.param.first;
       return name.substr(0, name.find('.'));
     });
+
+// Hostile input (tests/fixtures/make_hostile_fixtures.py): exit 2, one line naming the file and
+// the JSON pointer of the object at fault, nothing written.
+struct HostileCase {
+  const char* file;
+  const char* pointer;
+  const char* says;
+};
+
+class CliHostileInput : public ::testing::TestWithParam<HostileCase> {};
+
+TEST_P(CliHostileInput, ExitsTwoNamingTheObjectAndWritesNothing) {
+  const std::string input = fixture(std::string("hostile/") + GetParam().file + ".gltf");
+  const std::string parent = test::fresh_folder(std::string("cli_hostile_") + GetParam().file);
+  const auto start = std::chrono::steady_clock::now();
+  Outcome r = radbake("bake " + input + " -o " + parent + "/out");
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 30);  // fails fast
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_EQ(r.err.rfind("radbake: error: " + input + ": " + GetParam().pointer + ": ", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find(GetParam().says), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_FALSE(fs::exists(parent + "/out"));
+  EXPECT_EQ(leftovers(parent), 0u);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Fixtures, CliHostileInput,
+    ::testing::Values(
+        HostileCase{"image_absolute_path", "/images/0/uri", "outside the scene's folder"},
+        HostileCase{"image_parent_path", "/images/0/uri", "outside the scene's folder"},
+        HostileCase{"buffer_absolute_path", "/buffers/0/uri", "outside the scene's folder"},
+        HostileCase{"buffer_parent_path", "/buffers/0/uri", "outside the scene's folder"},
+        HostileCase{"accessor_2g_elements", "/accessors/0", "2147483648 elements need"},
+        HostileCase{"accessor_2g_zeros", "/", "more than --max-triangles"},
+        HostileCase{"instancing_bomb", "/nodes/2/children/1", "at most one parent"},
+        HostileCase{"tangent_short", "/meshes/0/primitives/0/attributes/TANGENT", "has 2 elements, POSITION has 4"},
+        HostileCase{"material_minus_one", "/meshes/0/primitives/0/material", "must be an index into /materials"},
+        HostileCase{"texture_transform_1e19",
+                    "/materials/0/pbrMetallicRoughness/baseColorTexture/extensions/KHR_texture_transform/scale/0",
+                    "must be a number from"},
+        HostileCase{"translation_1e20", "/nodes/0", "beyond the 1e7 m radbake bakes"},
+        HostileCase{"intensity_3e38", "/extensions/KHR_lights_punctual/lights/0/intensity", "above the 1e+20"},
+        HostileCase{"emissive_strength_3e38", "/materials/0/extensions/KHR_materials_emissive_strength/emissiveStrength",
+                    "above the 1e+20"},
+        HostileCase{"buffer_view_past_buffer", "/bufferViews/4", "runs past the end of buffer 0"},
+        HostileCase{"byte_stride_not_multiple_of_4", "/bufferViews/0/byteStride", "multiple of 4"},
+        HostileCase{"byte_stride_smaller_than_element", "/accessors/0", "do not fit the byteStride 8"}),
+    [](const auto& info) { return std::string(info.param.file); });
+
+TEST(Cli, DeepExtrasExitTwoWithoutOverflowingTheStack) {
+  std::string parent = test::fresh_folder("cli_deep_extras");
+  Outcome r = radbake("bake " + fixture("hostile/deep_extras.gltf") + " -o " + parent + "/out");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("JSON nested deeper than 128 levels"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(parent + "/out"));
+}
+
+TEST(Cli, BudgetsExceededExitTwoWithTheEstimate) {
+  std::string parent = test::fresh_folder("cli_budget");
+  const std::string bake = "bake " + fixture("hostile/lit_textured_floor.gltf") + " -o " + parent + "/out";
+  Outcome r = radbake(bake + " --max-triangles 1");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("the scene has 2 triangles after instancing, more than --max-triangles 1 allows"), std::string::npos)
+      << r.err;
+  // The default page, 1024 x 1024 texels, is about 0.45 GB of the estimate.
+  r = radbake(bake + " --max-memory 200M");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("1048576 lightmap texels"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("more than --max-memory 0.21 GB allows (raise it, or lower --max-page-size or --density)"),
+            std::string::npos)
+      << r.err;
+  EXPECT_FALSE(fs::exists(parent + "/out"));
+  EXPECT_EQ(radbake(bake + " --max-memory 200M --max-page-size 64 --quiet").status, 0);
+}
+
+TEST(Cli, AllowExternalFilesLetsAnOutsideImageThroughAndCopiesIt) {
+  std::string parent = test::fresh_folder("cli_external");
+  const std::string bake = "bake " + fixture("hostile/image_parent_path.gltf") + " -o " + parent + "/out --max-page-size 64";
+  EXPECT_EQ(radbake(bake).status, 2);
+  Outcome r = radbake(bake + " --allow-external-files --quiet");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(slurp(parent + "/out/image_parent_path_image0.png"), slurp(fixture("outside_texture.png")));
+  nlohmann::json report = nlohmann::json::parse(slurp(parent + "/out/report.json"));
+  EXPECT_EQ(report["options"]["allow-external-files"], "yes");
+}
 
 TEST(Cli, BakeWritesTheFolderAndReportsProgressAsPlainLines) {
   std::string parent = test::fresh_folder("cli_bake");

@@ -195,11 +195,11 @@ TEST_P(BadInput, IsOneClearInputError) {
 }
 
 const BadFile kBadFiles[] = {
-    {"invalid_json.gltf", "parse error"},
+    {"invalid_json.gltf", "not valid JSON (syntax error at byte"},
     {"missing_buffer.gltf", "missing_buffer.bin"},
     {"index_out_of_range.gltf", "index 7 at position 2 is out of range (3 vertices)"},
-    {"nan_position.gltf", "POSITION has a non-finite value at vertex 1"},
-    {"infinite_position.gltf", "POSITION has a non-finite value at vertex 1"},
+    {"nan_position.gltf", "/attributes/POSITION: has a non-finite value at vertex 1"},
+    {"infinite_position.gltf", "/attributes/POSITION: has a non-finite value at vertex 1"},
     {"no_geometry.gltf", "no triangles"},
     {"no_light.gltf", "nothing in the scene emits light"},
     {"required_extension.gltf", "requires extension KHR_draco_mesh_compression"},
