@@ -325,7 +325,7 @@ EffectPlan plan_effects(const Scene& scene, const PlanOptions& options) {
     decide("double-sided backs",
            std::to_string(twins) + " of " + std::to_string(double_sided) + " baked with texels of their own",
            twins == double_sided ? "every one can receive light: on an open surface or a light behind it"
-                                 : kept + " close shells with no light behind them: they show their front's texel");
+                                 : kept + " are on closed shells with no light behind them: they show their front's texel");
   }
 
   // Visibility.
