@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cassert>
 #include <cmath>
 #include <cstring>
 #include <map>
@@ -187,6 +188,8 @@ MeshInstance back_instance(const MeshInstance& front, int front_index, const std
 }  // namespace
 
 BackFaceCount add_back_faces(Scene& scene) {
+  assert(std::none_of(scene.instances.begin(), scene.instances.end(),
+                      [](const MeshInstance& inst) { return inst.back_of >= 0; }));  // once per scene
   BackFaceCount count;
   const size_t instances = scene.instances.size();
   std::map<int, std::vector<uint32_t>> by_node;  // instances without a node stand alone

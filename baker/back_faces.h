@@ -29,7 +29,8 @@ struct BackFaceCount {
 };
 
 // Appends one back-face instance (MeshInstance::back_of) per instance with twinned triangles.
-// Its TEXCOORD_1 is dropped: the back's lightmap UVs are always generated.
+// Its TEXCOORD_1 is dropped: the back's lightmap UVs are always generated. Once per scene, after
+// loading and before the atlas (the command, the tests' bake helpers and the accuracy study do).
 BackFaceCount add_back_faces(Scene& scene);
 
 }  // namespace radbake
