@@ -15,7 +15,6 @@ struct Emitter {
   Vec3 normal;
   bool uniform;
   Rgb emission;  // lm/m2, exact when uniform
-  bool double_sided;  // emits from its back too, the same light
 };
 
 std::vector<Emitter> collect_emitters(const Surface& surface, const MaterialSampler& materials) {
@@ -23,8 +22,7 @@ std::vector<Emitter> collect_emitters(const Surface& surface, const MaterialSamp
   for (uint32_t t = 0; t < surface.triangle_count(); ++t) {
     if (!materials.emits(t) || !(surface.area[t] > 0)) continue;
     Emitter em{t, {surface.corners[3 * t], surface.corners[3 * t + 1], surface.corners[3 * t + 2]},
-               surface.normal[t], materials.is_uniform(t), materials.emission(t, {1.0f / 3, 1.0f / 3}, 1.0f),
-               surface.double_sided[t] != 0};
+               surface.normal[t], materials.is_uniform(t), materials.emission(t, {1.0f / 3, 1.0f / 3}, 1.0f)};
     out.push_back(em);
   }
   return out;
@@ -47,13 +45,11 @@ int clip_to_hemisphere(Vec3 x, Vec3 n, const Vec3* in, int count, Vec3* out) {
 }
 
 // The part of the emitter above the horizon of point x (unit normal n), as a polygon of up to 4
-// corners, and the normal of the emitter's face toward x in `facing`; fewer than 3 corners when
-// the emitter shows x its back (and is single-sided), lies below x's horizon, or is edge-on: x
-// within `offset` (the receiver's ray offset) of its plane, as the emitter's own other triangles are.
-int visible_part(const Emitter& em, Vec3 x, Vec3 n, float offset, Vec3* polygon, Vec3& facing) {
-  const float height = dot(x - em.corner[0], em.normal);
-  if (!(height > offset) && !(em.double_sided && height < -offset)) return 0;
-  facing = height > 0 ? em.normal : -em.normal;
+// corners; fewer than 3 when the emitter shows x its back, lies below x's horizon, or is edge-on:
+// x within `offset` (the receiver's ray offset) of its plane, as the emitter's own other
+// triangles are (and its back-face twin).
+int visible_part(const Emitter& em, Vec3 x, Vec3 n, float offset, Vec3* polygon) {
+  if (!(dot(x - em.corner[0], em.normal) > offset)) return 0;
   return clip_to_hemisphere(x, n, em.corner, 3, polygon);
 }
 
@@ -135,8 +131,8 @@ std::vector<Rgb> emitter_irradiance(const Elements& e, const Surface& surface, c
         factor[k] = 0;
         if (emitters[k].triangle == e.triangle[i]) continue;
         for (const Vec3& x : points) {
-          Vec3 polygon[4], facing;
-          const int corners = visible_part(emitters[k], x, n, e.offset[i], polygon, facing);
+          Vec3 polygon[4];
+          const int corners = visible_part(emitters[k], x, n, e.offset[i], polygon);
           if (corners >= 3) factor[k] += polygon_form_factor(x, n, polygon, corners) / kFormFactorPoints;
         }
         total += factor[k] * sum(emitters[k].emission);
@@ -165,21 +161,21 @@ std::vector<Rgb> emitter_irradiance(const Elements& e, const Surface& surface, c
         Rgb seen{};
         for (int j = 0; j < rays; ++j) {
           const Vec3 from = footprint_point(e, surface, i, cmj_sample(uint32_t(j), uint32_t(rays), origin_pattern));
-          Vec3 polygon[4], facing;
-          const int corners = visible_part(em, from, n, e.offset[i], polygon, facing);
+          Vec3 polygon[4];
+          const int corners = visible_part(em, from, n, e.offset[i], polygon);
           if (corners < 3) continue;
           float area;
           const Vec3 y = polygon_point(polygon, corners, cmj_sample(uint32_t(j), uint32_t(rays), target_pattern), &area);
           const Vec3 to_y = y - from;
           const double r2 = dot(to_y, to_y);
-          const double weight = std::max(0.0f, dot(n, to_y)) * std::max(0.0f, -dot(facing, to_y)) / (r2 * r2) * area;
+          const double weight = std::max(0.0f, dot(n, to_y)) * std::max(0.0f, -dot(em.normal, to_y)) / (r2 * r2) * area;
           if (!(weight > 0)) continue;
           weights += weight;
           const Vec3 origin = from + ng * e.offset[i];
           // The ray ends just off the emitter, on the receiver's side: stopping a fraction short
           // along the ray is not enough at grazing angles, where that point is still within
           // rounding of the emitter's plane and the emitter would occlude itself.
-          Vec3 target = y + facing * std::max(e.offset[i], 1e-5f * length(y - origin));
+          Vec3 target = y + em.normal * std::max(e.offset[i], 1e-5f * length(y - origin));
           // Nor may it end lower over the receiver's plane than the ray starts: a target in that
           // plane (an emitter meeting the receiver at an edge, or a distant one that merely lies
           // in the plane extended) would have the ray graze the receiver, or slip between a wall

@@ -13,20 +13,16 @@ EnergyBalance energy_balance(const Elements& e, const Patches& patches, const Pa
   b.emitted = punctual_power;
   for (size_t i = 0; i < e.size(); ++i) {
     if (!e.valid(i)) continue;
-    const double faces = patches.double_sided[patches.patch_of_element[i]] ? 2 : 1;
-    b.emitted += faces * mean(e.emission[i]) * e.area[i];
+    b.emitted += mean(e.emission[i]) * e.area[i];
     Rgb absorbed = (Rgb{1, 1, 1} - e.reflectance[i]) * irradiance[i];
     b.absorbed += mean(absorbed) * e.area[i];
   }
   for (size_t q = 0; q < patches.size(); ++q) {
-    // Per face: transport's shares are of one face's light, summed over the faces.
     double leaving = mean(patches.emission[q] + patch_reflected_exitance[q]) * patches.area[q];
     b.escaped += leaving * transport.escaped[q];
     b.lost += leaving * transport.lost[q];
-    if (patches.double_sided[q]) b.back_faces += mean(patch_reflected_exitance[q]) * patches.area[q];
   }
-  const double sources = b.emitted + b.back_faces;
-  b.relative_error = sources > 0 ? (sources - b.absorbed - b.escaped - b.lost) / sources : 0.0;
+  b.relative_error = b.emitted > 0 ? (b.emitted - b.absorbed - b.escaped - b.lost) / b.emitted : 0.0;
   return b;
 }
 

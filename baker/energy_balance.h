@@ -13,14 +13,12 @@ namespace radbake {
 
 // Powers in lumens, the mean of the RGB channels.
 struct EnergyBalance {
-  double emitted = 0;     // by emitting surfaces (both faces of double-sided ones), plus what
-                          // punctual lights deliver onto surfaces
-  double back_faces = 0;  // reflected light double-sided surfaces send from their backs: the
-                          // front's texels shown again, not light that arrived at the back
+  double emitted = 0;     // by emitting surfaces (a double-sided one's back-face twin is a surface
+                          // of its own), plus what punctual lights deliver onto surfaces
   double absorbed = 0;    // by front faces: (1 - rho) * irradiance * area over all elements
   double escaped = 0;     // left the scene
   double lost = 0;        // struck back faces (absorbed there) or texels buried inside geometry
-  double relative_error = 0;  // (emitted + back_faces - absorbed - escaped - lost) / (emitted + back_faces)
+  double relative_error = 0;  // (emitted - absorbed - escaped - lost) / emitted
   bool measured = false;  // false when the plan skipped interreflection: no ray measured what escapes
 };
 

@@ -28,8 +28,8 @@ std::vector<Rgb> gather_indirect(const Elements& e, const Patches& patches, cons
         // whole footprint, and near a wall the footprint sees more of the wall than its centre.
         Vec3 origin = footprint_point(e, surface, i, cmj_sample(k, rays, origin_pattern)) + ng * e.offset[i];
         Vec3 dir = hemisphere_direction(e.normal[i], ng, cmj_sample(k, rays, direction_pattern));
-        bool escaped, back;  // a double-sided back shows the patch's light like its front
-        uint32_t q = patch_hit(e, patches, surface, tracer, origin, dir, escaped, back);
+        bool escaped;
+        uint32_t q = patch_hit(e, patches, surface, tracer, origin, dir, escaped);
         if (q != UINT32_MAX) sum += patch_exitance[q];
         else my_lost += !escaped;
       }

@@ -52,8 +52,8 @@ struct Viewpoint {
 
 // Where a patch's hemicube stands: the area-weighted centroid of a flat patch (lifted like its
 // elements' ray origins); on a curved patch, whose centroid may lie off the surface, the sample
-// point of the member element nearest to it. `side` -1: the back's, looking the other way.
-Viewpoint viewpoint(const Elements& elements, const Patches& patches, const Surface& surface, size_t p, float side) {
+// point of the member element nearest to it.
+Viewpoint viewpoint(const Elements& elements, const Patches& patches, const Surface& surface, size_t p) {
   Vec3 centroid{};
   double area = 0;
   for (uint32_t k = patches.first_member[p]; k < patches.first_member[p + 1]; ++k) {
@@ -74,9 +74,9 @@ Viewpoint viewpoint(const Elements& elements, const Patches& patches, const Surf
     flat = flat && dot(surface.normal[elements.triangle[i]], ng) > 0.9999f &&
            std::fabs(dot(elements.position[i] - centroid, ng)) <= elements.offset[i];
   }
-  const Vec3 n = surface.normal[elements.triangle[nearest]] * side, shading = elements.normal[nearest] * side;
-  if (flat) return {centroid + n * offset, shading, n};
-  return {elements.position[nearest] + n * elements.offset[nearest], shading, n};
+  const Vec3 n = surface.normal[elements.triangle[nearest]];
+  if (flat) return {centroid + n * offset, elements.normal[nearest], n};
+  return {elements.position[nearest] + n * elements.offset[nearest], elements.normal[nearest], n};
 }
 
 }  // namespace
@@ -88,34 +88,33 @@ void measure_hemicube_rows(const Elements& elements, const Patches& patches, con
   const size_t patch_count = patches.size();
 
   tbb::enumerable_thread_specific<RowTally> tallies;
-  const std::vector<uint32_t> faces = faces_of(patches, which);
-  progress.begin("form factors", faces.size());
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, faces.size(), 4), [&](const tbb::blocked_range<size_t>& r) {
+  progress.begin("form factors", which.size());
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, which.size(), 4), [&](const tbb::blocked_range<size_t>& r) {
     RowTally& tally = tallies.local();
     for (size_t w = r.begin(); w < r.end(); ++w) {
-      const uint32_t face = faces[w], p = uint32_t(face % patch_count);
-      const Viewpoint view = viewpoint(elements, patches, surface, p, face < patch_count ? 1.0f : -1.0f);
+      const uint32_t p = which[w];
+      const Viewpoint view = viewpoint(elements, patches, surface, p);
       const Vec3 ng = view.geometric_normal, n = view.normal, origin = view.origin;
       Vec3 t, b;
       orthonormal_basis(n, t, b);
-      Rng rng(seed, Stream::Hemicube, face);
+      Rng rng(seed, Stream::Hemicube, p);
       const float turn = 2 * kPi * rng.uniform();
       const Vec3 tx = t * std::cos(turn) + b * std::sin(turn), ty = cross(n, tx);
       double escaped = 0, lost = 0;
       for (const HemicubePixel& pixel : pixels) {
         Vec3 dir = above_surface(normalize(tx * pixel.direction.x + ty * pixel.direction.y + n * pixel.direction.z), ng);
-        bool left, back;
-        uint32_t q = patch_hit(elements, patches, surface, tracer, origin, dir, left, back);
+        bool left;
+        uint32_t q = patch_hit(elements, patches, surface, tracer, origin, dir, left);
         if (q == UINT32_MAX) {
           (left ? escaped : lost) += pixel.delta_form_factor;
           continue;
         }
-        tally.add(face_hit(q, back, patch_count), pixel.delta_form_factor, 2 * patch_count);
+        tally.add(q, pixel.delta_form_factor, patch_count);
       }
-      tally.take(out.rows[face], 1.0f);
-      out.escaped[face] = float(escaped);
-      out.lost[face] = float(lost);
-      out.rays[face] = uint32_t(pixels.size());
+      tally.take(out.rows[p], 1.0f);
+      out.escaped[p] = float(escaped);
+      out.lost[p] = float(lost);
+      out.rays[p] = uint32_t(pixels.size());
     }
     progress.advance(r.size());
   });

@@ -44,16 +44,14 @@ void measure(const Elements& elements, const Patches& patches, const Surface& su
 // A share of a carried row that landed on a patch split since: it goes to the pieces once their
 // own rows are measured.
 struct PendingShare {
-  uint32_t from;    // fine face whose row it is
+  uint32_t from;    // fine patch whose row it is
   uint32_t target;  // coarse patch it landed on
-  bool back;        // on that patch's back
   float share;
 };
 
-// Rows of the patches that were not split carry over to the finer patches (both faces of the
-// double-sided); their shares landing on split patches wait in `pending`. The pieces of every
-// coarse patch are returned in `pieces`, and the fine patches whose rows are still to be measured
-// in `fresh`.
+// Rows of the patches that were not split carry over to the finer patches; their shares landing on
+// split patches wait in `pending`. The pieces of every coarse patch are returned in `pieces`, and
+// the fine patches whose rows are still to be measured in `fresh`.
 MeasuredRows carry_rows(const Patches& coarse, const Patches& fine, const std::vector<uint8_t>& split,
                         const MeasuredRows& rows, std::vector<uint32_t>& fresh,
                         std::vector<std::vector<uint32_t>>& pieces, std::vector<PendingShare>& pending) {
@@ -71,31 +69,28 @@ MeasuredRows carry_rows(const Patches& coarse, const Patches& fine, const std::v
   out.resize(fine.size());
   fresh.clear();
   pending.clear();
-  for (size_t face = 0; face < 2 * n; ++face) {
-    const size_t p = face % n;
+  for (size_t p = 0; p < n; ++p) {
     if (same[p] == UINT32_MAX) {
-      if (face < n) fresh.insert(fresh.end(), pieces[p].begin(), pieces[p].end());
+      fresh.insert(fresh.end(), pieces[p].begin(), pieces[p].end());
       continue;
     }
-    const uint32_t to = face_hit(same[p], face >= n, fine.size());
+    const uint32_t to = same[p];
     auto& row = out.rows[to];
-    for (auto [target, f] : rows.rows[face]) {
-      const uint32_t q = uint32_t(target % n);
-      const bool back = target >= n;
-      if (same[q] != UINT32_MAX) row.emplace_back(face_hit(same[q], back, fine.size()), f);
-      else pending.push_back({to, q, back, f});
+    for (auto [q, f] : rows.rows[p]) {
+      if (same[q] != UINT32_MAX) row.emplace_back(same[q], f);
+      else pending.push_back({to, q, f});
     }
     std::sort(row.begin(), row.end());
-    out.escaped[to] = rows.escaped[face];
-    out.lost[to] = rows.lost[face];
-    out.rays[to] = rows.rays[face];
+    out.escaped[to] = rows.escaped[p];
+    out.lost[to] = rows.lost[p];
+    out.rays[to] = rows.rays[p];
   }
   std::sort(fresh.begin(), fresh.end());
   return out;
 }
 
 // A carried share landing on a split patch goes to its pieces as their own measured rows say they
-// see the row's face back: by reciprocity A_p F_pr = A_r F_rp. Shared by area instead, a floor
+// see the row's patch back: by reciprocity A_p F_pr = A_r F_rp. Shared by area instead, a floor
 // patch would go on seeing the pieces of a ceiling patch that a lamp hides from it, and light
 // would pass through the lamp. Pieces whose rays found nothing of p share it by area.
 void resolve_pending(const Patches& fine, const std::vector<std::vector<uint32_t>>& pieces,
@@ -108,7 +103,7 @@ void resolve_pending(const Patches& fine, const std::vector<std::vector<uint32_t
     double total = 0, area = 0;
     for (size_t k = 0; k < to.size(); ++k) {
       area += fine.area[to[k]];
-      const auto& row = rows.rows[face_hit(to[k], s.back, fine.size())];
+      const auto& row = rows.rows[to[k]];
       auto at = std::lower_bound(row.begin(), row.end(), std::make_pair(s.from, 0.0f),
                                  [](const auto& a, const auto& b) { return a.first < b.first; });
       if (at != row.end() && at->first == s.from) total += weight[k] = double(fine.area[to[k]]) * at->second;
@@ -116,21 +111,21 @@ void resolve_pending(const Patches& fine, const std::vector<std::vector<uint32_t
     auto& row = rows.rows[s.from];
     for (size_t k = 0; k < to.size(); ++k) {
       double part = total > 0 ? weight[k] / total : fine.area[to[k]] / area;
-      if (part > 0) row.emplace_back(face_hit(to[k], s.back, fine.size()), float(s.share * part));
+      if (part > 0) row.emplace_back(to[k], float(s.share * part));
     }
     touched.push_back(s.from);
   }
   std::sort(touched.begin(), touched.end());
   touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
-  for (uint32_t f : touched) std::sort(rows.rows[f].begin(), rows.rows[f].end());
+  for (uint32_t p : touched) std::sort(rows.rows[p].begin(), rows.rows[p].end());
 }
 
 }  // namespace
 
 std::vector<Rgb> gathered_irradiance(const Patches& patches, const PatchTransport& transport,
                                      const std::vector<Rgb>& exitance) {
-  // Rows say where each patch's light lands (from both faces of a double-sided one), so each
-  // receiver's share comes by scattering: E_q += B_p A_p F_pq / A_q.
+  // Rows say where each patch's light lands, so each receiver's share comes by scattering:
+  // E_q += B_p A_p F_pq / A_q.
   std::vector<Rgb> irradiance(patches.size());
   for (size_t p = 0; p < patches.size(); ++p)
     for (uint64_t k = transport.row_start[p]; k < transport.row_start[p + 1]; ++k) {

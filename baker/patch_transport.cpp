@@ -20,15 +20,12 @@ bool sees(const RayTracer& tracer, Vec3 from, Vec3 to) {
 
 // The element that stands for a hit point. Where a wall crosses a texel, the texel's element
 // lies on one side only; a hit on the other side belongs to the neighbour on its own side (or to
-// nobody), never to the element behind the wall, or light would pass through the wall. On the
-// back of a double-sided surface, "its side" is the back's.
+// nobody), never to the element behind the wall, or light would pass through the wall.
 int64_t element_for_hit(const Elements& e, const Surface& surface, const RayTracer& tracer, const Hit& hit) {
   int64_t j = element_at_point(e, surface, hit.triangle, hit.bary);
   if (j < 0 || !(e.flags[size_t(j)] & kNearGeometry)) return j;
-  const float side = hit.front ? 1.0f : -1.0f;
-  const Vec3 ng = surface.normal[hit.triangle] * side;
-  const Vec3 at = surface.point(hit.triangle, hit.bary) + ng * e.offset[size_t(j)];
-  auto lifted = [&](size_t k) { return e.position[k] + surface.normal[e.triangle[k]] * (side * e.offset[k]); };
+  const Vec3 at = surface.point(hit.triangle, hit.bary) + surface.normal[hit.triangle] * e.offset[size_t(j)];
+  auto lifted = [&](size_t k) { return e.position[k] + surface.normal[e.triangle[k]] * e.offset[k]; };
   if (sees(tracer, at, lifted(size_t(j)))) return j;
   const uint32_t width = uint32_t(surface.pages[e.page[size_t(j)]].width);
   const std::vector<int32_t>& grid = e.element_at[e.page[size_t(j)]];
@@ -47,11 +44,10 @@ int64_t element_for_hit(const Elements& e, const Surface& surface, const RayTrac
 }  // namespace
 
 uint32_t patch_hit(const Elements& elements, const Patches& patches, const Surface& surface,
-                   const RayTracer& tracer, Vec3 origin, Vec3 direction, bool& escaped, bool& back) {
+                   const RayTracer& tracer, Vec3 origin, Vec3 direction, bool& escaped) {
   Hit hit = tracer.intersect(origin, direction, 0.0f, INFINITY);
   escaped = hit.missed();
-  back = !escaped && !hit.front;
-  if (escaped || (back && !surface.double_sided[hit.triangle])) return UINT32_MAX;
+  if (escaped || !hit.front) return UINT32_MAX;
   int64_t element = element_for_hit(elements, surface, tracer, hit);
   return element < 0 ? UINT32_MAX : patches.patch_of_element[size_t(element)];
 }
@@ -74,8 +70,8 @@ namespace {
 constexpr double kMaxScale = 64;
 
 void balance_reciprocity(const Patches& patches, std::vector<std::vector<std::pair<uint32_t, float>>>& rows) {
-  const size_t n = rows.size();  // faces
-  auto area = [&](size_t face) { return patches.area[face % patches.size()]; };
+  const size_t n = rows.size();
+  auto area = [&](size_t p) { return patches.area[p]; };
   std::vector<double> target(n, 0);
   std::vector<std::vector<std::pair<uint32_t, double>>> g(n);
   for (size_t p = 0; p < n; ++p)
@@ -155,42 +151,19 @@ PatchTransport balanced_transport(const Patches& patches, const MeasuredRows& me
   std::vector<std::vector<std::pair<uint32_t, float>>> rows = measured.rows;
   balance_reciprocity(patches, rows);
   PatchTransport out;
-  out.escaped.assign(n, 0);
-  out.lost.assign(n, 0);
-  out.rays.assign(measured.rays.begin(), measured.rays.begin() + ptrdiff_t(n));
+  out.escaped = measured.escaped;
+  out.lost = measured.lost;
+  out.rays = measured.rays;
   out.row_start.assign(n + 1, 0);
-  std::vector<std::pair<uint32_t, float>> row;
   for (size_t p = 0; p < n; ++p) {
-    // Both faces' light landing on fronts; what lands on a double-sided back is absorbed there.
-    row.clear();
-    for (size_t face : {p, size_t(back_face(uint32_t(p), n))}) {
-      out.escaped[p] += measured.escaped[face];
-      out.lost[p] += measured.lost[face];
-      for (auto [q, f] : rows[face]) {
-        if (q < n) row.emplace_back(q, f);
-        else out.lost[p] += f;
-      }
-      rows[face] = {};
+    for (auto [q, f] : rows[p]) {
+      out.target.push_back(q);
+      out.form_factor.push_back(f);
     }
-    std::sort(row.begin(), row.end());
-    for (size_t k = 0; k < row.size(); ++k) {
-      if (k > 0 && row[k].first == row[k - 1].first) {
-        out.form_factor.back() += row[k].second;
-        continue;
-      }
-      out.target.push_back(row[k].first);
-      out.form_factor.push_back(row[k].second);
-    }
+    rows[p] = {};
     out.row_start[p + 1] = out.target.size();
   }
   return out;
-}
-
-std::vector<uint32_t> faces_of(const Patches& patches, const std::vector<uint32_t>& which) {
-  std::vector<uint32_t> faces(which);
-  for (uint32_t p : which)
-    if (patches.double_sided[p]) faces.push_back(back_face(p, patches.size()));
-  return faces;
 }
 
 void measure_ray_cast_rows(const Elements& elements, const Patches& patches, const Surface& surface,
@@ -201,8 +174,7 @@ void measure_ray_cast_rows(const Elements& elements, const Patches& patches, con
   for (double p : power) total_power += p;
   for (uint32_t p : which) {
     double extra = total_power > 0 ? double(rays_per_patch) * double(patch_count) * power[p] / total_power : 0;
-    out.rays[p] = out.rays[back_face(p, patch_count)] =
-        uint32_t(std::min<double>(16.0 * rays_per_patch, rays_per_patch + std::round(extra)));
+    out.rays[p] = uint32_t(std::min<double>(16.0 * rays_per_patch, rays_per_patch + std::round(extra)));
   }
 
   struct Scratch {
@@ -210,21 +182,19 @@ void measure_ray_cast_rows(const Elements& elements, const Patches& patches, con
     std::vector<double> cumulative_area;
   };
   tbb::enumerable_thread_specific<Scratch> scratch;
-  const std::vector<uint32_t> faces = faces_of(patches, which);
-  progress.begin("form factors", faces.size());
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, faces.size(), 8), [&](const tbb::blocked_range<size_t>& r) {
+  progress.begin("form factors", which.size());
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, which.size(), 8), [&](const tbb::blocked_range<size_t>& r) {
     Scratch& s = scratch.local();
     for (size_t w = r.begin(); w < r.end(); ++w) {
-      const uint32_t face = faces[w], p = uint32_t(face % patch_count);
-      const float side = face < patch_count ? 1.0f : -1.0f;  // the back's rays leave the other way
+      const uint32_t p = which[w];
       const uint32_t* first = &patches.members[patches.first_member[p]];
       const size_t member_count = patches.first_member[p + 1] - patches.first_member[p];
       s.cumulative_area.resize(member_count);
       double total = 0;
       for (size_t m = 0; m < member_count; ++m) s.cumulative_area[m] = total += elements.area[first[m]];
 
-      const uint32_t rays = out.rays[face];
-      Rng rng(seed, Stream::PatchRays, face);
+      const uint32_t rays = out.rays[p];
+      Rng rng(seed, Stream::PatchRays, p);
       const uint32_t origin_pattern = rng.next_u32(), direction_pattern = rng.next_u32();
       uint32_t escaped = 0, lost = 0;
       for (uint32_t k = 0; k < rays; ++k) {
@@ -233,22 +203,22 @@ void measure_ray_cast_rows(const Elements& elements, const Patches& patches, con
         size_t m = size_t(std::lower_bound(s.cumulative_area.begin(), s.cumulative_area.end(), pick) -
                           s.cumulative_area.begin());
         const uint32_t i = first[std::min(m, member_count - 1)];
-        const Vec3 ng = surface.normal[elements.triangle[i]] * side;
+        const Vec3 ng = surface.normal[elements.triangle[i]];
         Vec3 origin = footprint_point(elements, surface, i, cmj_sample(k, rays, origin_pattern));
         origin += ng * elements.offset[i];
-        Vec3 dir = hemisphere_direction(elements.normal[i] * side, ng, cmj_sample(k, rays, direction_pattern));
-        bool left, back;
-        uint32_t q = patch_hit(elements, patches, surface, tracer, origin, dir, left, back);
+        Vec3 dir = hemisphere_direction(elements.normal[i], ng, cmj_sample(k, rays, direction_pattern));
+        bool left;
+        uint32_t q = patch_hit(elements, patches, surface, tracer, origin, dir, left);
         if (q == UINT32_MAX) {
           escaped += left;
           lost += !left;
           continue;
         }
-        s.tally.add(face_hit(q, back, patch_count), 1, 2 * patch_count);
+        s.tally.add(q, 1, patch_count);
       }
-      s.tally.take(out.rows[face], float(rays));
-      out.escaped[face] = float(escaped) / float(rays);
-      out.lost[face] = float(lost) / float(rays);
+      s.tally.take(out.rows[p], float(rays));
+      out.escaped[p] = float(escaped) / float(rays);
+      out.lost[p] = float(lost) / float(rays);
     }
     progress.advance(r.size());
   });

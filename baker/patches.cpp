@@ -95,7 +95,6 @@ Patches patches_from_keys(const Elements& e, const Surface& surface, std::vector
       p.reflectance.push_back({});
       p.emission.push_back({});
       p.side.push_back(uint16_t(1u << ((keys[i].key >> 54) & 15)));
-      p.double_sided.push_back(surface.double_sided[e.triangle[keys[i].element]]);
     }
     uint32_t el = keys[i].element;
     size_t patch = p.area.size() - 1;

@@ -17,7 +17,6 @@ struct Patches {
   std::vector<Rgb> reflectance;        // area-weighted mean of the members
   std::vector<Rgb> emission;           // area-weighted mean exitance, lm/m2
   std::vector<uint16_t> side;          // texels per side of the block each patch was cut from
-  std::vector<uint8_t> double_sided;   // 1: its back face shows its light too (one chart, one material)
   std::vector<uint32_t> patch_of_element;  // UINT32_MAX for buried elements
   int block_size = 1;                  // texels per side of the coarsest blocks
 

@@ -314,6 +314,20 @@ EffectPlan plan_effects(const Scene& scene, const PlanOptions& options) {
            std::to_string(varying) + " materials have textures" + (vertex_colours ? ", some meshes vertex colours" : ""));
   }
 
+  // Double-sided backs, as baker/back_faces.cpp gave them (or not) triangles of their own.
+  size_t double_sided = 0, twins = 0;
+  for (const MeshInstance& inst : scene.instances) {
+    if (inst.back_of >= 0) twins += inst.triangle_count();
+    else if (material_of(scene, inst.material).double_sided) double_sided += inst.triangle_count();
+  }
+  if (double_sided > 0) {
+    const std::string kept = std::to_string(double_sided - twins);
+    decide("double-sided backs",
+           std::to_string(twins) + " of " + std::to_string(double_sided) + " baked with texels of their own",
+           twins == double_sided ? "every one can receive light: on an open surface or a light behind it"
+                                 : kept + " are on closed shells with no light behind them: they show their front's texel");
+  }
+
   // Visibility.
   std::string hidden = why_not_convex(scene, plan.light_traced);
   if (hidden.empty()) {

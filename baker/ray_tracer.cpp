@@ -16,6 +16,7 @@ struct RayTracer::Impl {
   RTCScene scene = nullptr;
   std::mutex error_mutex;
   std::string first_error;
+  std::vector<uint32_t> triangle_of_primitive;  // back-face twins are not in Embree's scene
   mutable tbb::enumerable_thread_specific<uint64_t> ray_counts;
 
   explicit Impl(const Surface& s) : surface(s) {}
@@ -42,7 +43,9 @@ RayTracer::RayTracer(const Surface& surface) : impl_(std::make_unique<Impl>(surf
   // must stay closed, or light leaks and the energy balance breaks.
   rtcSetSceneFlags(m.scene, RTC_SCENE_FLAG_ROBUST);
   rtcSetSceneBuildQuality(m.scene, RTC_BUILD_QUALITY_HIGH);
-  const size_t n = surface.triangle_count();
+  for (uint32_t t = 0; t < surface.triangle_count(); ++t)
+    if (!surface.back_face[t]) m.triangle_of_primitive.push_back(t);
+  const size_t n = m.triangle_of_primitive.size();
   if (n > 0) {
     RTCGeometry geometry = rtcNewGeometry(m.device, RTC_GEOMETRY_TYPE_TRIANGLE);
     auto* vertices = static_cast<float*>(
@@ -51,9 +54,10 @@ RayTracer::RayTracer(const Surface& surface) : impl_(std::make_unique<Impl>(surf
         rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), n));
     if (vertices && indices) {
       for (size_t i = 0; i < 3 * n; ++i) {
-        vertices[3 * i] = surface.corners[i].x;
-        vertices[3 * i + 1] = surface.corners[i].y;
-        vertices[3 * i + 2] = surface.corners[i].z;
+        const Vec3 corner = surface.corners[3 * m.triangle_of_primitive[i / 3] + i % 3];
+        vertices[3 * i] = corner.x;
+        vertices[3 * i + 1] = corner.y;
+        vertices[3 * i + 2] = corner.z;
         indices[i] = unsigned(i);
       }
     }
@@ -105,10 +109,17 @@ Hit RayTracer::intersect(Vec3 origin, Vec3 direction, float t_near, float t_far)
   rtcIntersect1(impl_->scene, &context, &rh);
   Hit hit;
   if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return hit;
-  hit.triangle = rh.hit.primID;
+  const Surface& s = impl_->surface;
+  hit.triangle = impl_->triangle_of_primitive[rh.hit.primID];
   hit.bary = {rh.hit.u, rh.hit.v};
   hit.distance = rh.ray.tfar;
-  hit.front = dot(direction, impl_->surface.normal[hit.triangle]) < 0;
+  hit.front = dot(direction, s.normal[hit.triangle]) < 0;
+  if (!hit.front && s.twin[hit.triangle] != UINT32_MAX) {
+    // The twin winds (0, 2, 1): corners 1 and 2 trade places, and so do their weights.
+    hit.triangle = s.twin[hit.triangle];
+    hit.bary = {rh.hit.v, rh.hit.u};
+    hit.front = true;
+  }
   return hit;
 }
 

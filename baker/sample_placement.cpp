@@ -78,19 +78,14 @@ void place_samples(Elements& e, const Surface& surface, const RayTracer& tracer,
 
       Rng rng(seed, Stream::Probe, i);
       uint32_t pattern = rng.next_u32();
-      // The back of a double-sided surface is a face like its front (a plate facing a panel's
-      // back is not inside anything), unless backs are all the sample sees: inside a closed
-      // double-sided mesh, as Blender exports them by default.
-      int back = 0, double_sided_back = 0;
+      int back = 0;
       Vec3 from = e.position[i] + ng * eps;
       for (int k = 0; k < kBurialProbes; ++k) {
         Vec3 dir = cosine_direction(ng, cmj_sample(uint32_t(k), kBurialProbes, pattern));
         Hit hit = tracer.intersect(from, dir, 0.0f, INFINITY);
-        if (hit.missed() || hit.front) continue;
-        (surface.double_sided[hit.triangle] ? double_sided_back : back) += 1;
+        back += !hit.missed() && !hit.front;
       }
-      if (back >= kBuriedBackfaceFraction * kBurialProbes || back + double_sided_back == kBurialProbes)
-        e.flags[i] |= kBuried;
+      if (back >= kBuriedBackfaceFraction * kBurialProbes) e.flags[i] |= kBuried;
     }
     progress.advance(r.size());
   });

@@ -74,6 +74,11 @@ struct MeshInstance {
   std::vector<std::vector<Vec2>> texcoords;  // TEXCOORD_n at index n (empty sets for gaps)
   std::vector<Rgb> colors;       // COLOR_0 (multiplies the base colour); empty when absent
   std::vector<uint32_t> triangles;  // three vertex indices per triangle (strips, fans expanded)
+  // A back-face twin (baker/back_faces.h): the back of instance `back_of`'s double-sided triangles
+  // front_triangle[t], as triangles of their own (same vertices, reversed winding, flipped normals)
+  // with texels of their own. -1 for an instance read from the file.
+  int back_of = -1;
+  std::vector<uint32_t> front_triangle;
 
   size_t vertex_count() const { return positions.size(); }
   size_t triangle_count() const { return triangles.size() / 3; }

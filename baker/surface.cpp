@@ -11,7 +11,24 @@ Surface build_surface(const Scene& scene, const Atlas& atlas) {
   Surface s;
   s.pages = atlas.pages;
   size_t triangle_count = 0;
-  for (const MeshInstance& inst : scene.instances) triangle_count += inst.triangle_count();
+  std::vector<uint32_t> first_triangle;  // per instance
+  for (const MeshInstance& inst : scene.instances) {
+    first_triangle.push_back(uint32_t(triangle_count));
+    triangle_count += inst.triangle_count();
+  }
+  s.twin.assign(triangle_count, UINT32_MAX);
+  s.back_face.assign(triangle_count, 0);
+  for (size_t i = 0; i < scene.instances.size(); ++i) {
+    const MeshInstance& inst = scene.instances[i];
+    if (inst.back_of < 0) continue;
+    for (size_t t = 0; t < inst.triangle_count(); ++t) {
+      const uint32_t back = first_triangle[i] + uint32_t(t);
+      const uint32_t front = first_triangle[size_t(inst.back_of)] + inst.front_triangle[t];
+      s.twin[back] = front;
+      s.twin[front] = back;
+      s.back_face[back] = 1;
+    }
+  }
   s.corners.reserve(3 * triangle_count);
   s.corner_normals.reserve(3 * triangle_count);
   s.corner_lightmap.reserve(3 * triangle_count);
@@ -50,7 +67,6 @@ Surface build_surface(const Scene& scene, const Atlas& atlas) {
       }
       s.instance.push_back(uint32_t(i));
       s.material.push_back(inst.material);
-      s.double_sided.push_back(material_of(scene, inst.material).double_sided);
       s.page.push_back(uint32_t(lm.page));
       s.chart.push_back(lm.triangle_chart[t]);
     }

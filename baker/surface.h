@@ -22,7 +22,11 @@ struct Surface {
   std::vector<float> area;            // m^2
   std::vector<uint32_t> instance;     // index into Scene::instances
   std::vector<int> material;          // index into Scene::materials, -1 for the default
-  std::vector<uint8_t> double_sided;  // 1: the material is double-sided (its back shows the front's texel)
+  // The other face of a double-sided triangle given a back-face twin (baker/back_faces.h), or
+  // UINT32_MAX. Twins lie in the same plane: the ray tracer holds the fronts only and reports a
+  // hit on a front's back as a hit on its twin's front.
+  std::vector<uint32_t> twin;
+  std::vector<uint8_t> back_face;     // 1: a back-face twin
   std::vector<uint32_t> page;
   std::vector<uint32_t> chart;        // UINT32_MAX for degenerate triangles
   std::vector<AtlasPage> pages;

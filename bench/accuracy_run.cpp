@@ -16,6 +16,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "baker/back_faces.h"
 #include "baker/bake.h"
 #include "baker/direct_light.h"
 #include "baker/lightmap_difference.h"
@@ -115,6 +116,7 @@ int run(int argc, char** argv) {
   }
   CommandLine cl = parse_command_line(args);
   StudyScene study = study_scene(argv[1]);
+  add_back_faces(study.scene);
   Atlas atlas = ensure_lightmap_uvs(mesh_views(study.scene), cl.bake.atlas);
 
   auto start = std::chrono::steady_clock::now();

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "baker/back_faces.h"
 #include "baker/bake.h"
 #include "baker/errors.h"
 #include "baker/surface.h"
@@ -74,6 +75,7 @@ int run_bake(const radbake::BakeCommand& cmd) {
   auto t = std::chrono::steady_clock::now();
   LoadedScene loaded = load_gltf(cmd.input, cmd.load);
   check_bake_budget(loaded, cmd.atlas, cmd.load, cmd.input);
+  add_back_faces(loaded.scene);
   run.io_times.push_back({"load", seconds_since(t)});
   // Planned before anything is written or unwrapped, so a scene with no light fails at once.
   const EffectPlan plan = plan_effects(loaded.scene, cmd.bake.plan);
@@ -179,6 +181,7 @@ int run_uv(const radbake::UvCommand& cmd) {
   LoadedScene loaded = load_gltf(cmd.input, cmd.load);
   check_bake_budget(loaded, cmd.atlas, cmd.load, cmd.input);
   double load_seconds = seconds_since(t);
+  if (cmd.evaluate_texcoord < 0) add_back_faces(loaded.scene);  // their charts are part of the cost
   std::vector<MeshView> views = mesh_views(loaded.scene);
   if (cmd.evaluate_texcoord < 0) {
     print_stats(ensure_lightmap_uvs(views, cmd.atlas), cmd, load_seconds);

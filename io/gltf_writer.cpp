@@ -126,6 +126,9 @@ class Writer {
     const int lightmap_buffer = int(doc_["buffers"].size());
     BinaryWriter bin(doc_, lightmap_buffer);
     add_lightmap_textures();
+    has_back_.assign(scene_.instances.size(), 0);
+    for (const MeshInstance& inst : scene_.instances)
+      if (inst.back_of >= 0) has_back_[size_t(inst.back_of)] = 1;
     for (size_t i = 0; i < scene_.instances.size(); ++i) rewrite_primitive(i, bin);
     std::string bin_name = name_ + "_lightmap.bin";
     doc_["buffers"].push_back({{"uri", bin_name}, {"byteLength", bin.data().size()}});
@@ -206,25 +209,57 @@ class Writer {
     return it->second;
   }
 
-  int lightmap_material(int material, int page, int tex_coord) {
-    auto key = std::make_tuple(material, page, tex_coord);
+  // `single_sided`: a double-sided material whose backs have texels of their own, shown by a
+  // primitive of their own; culling keeps each face to its own texels.
+  int lightmap_material(int material, int page, int tex_coord, bool single_sided) {
+    auto key = std::make_tuple(material, page, tex_coord, single_sided);
     auto found = material_clones_.find(key);
     if (found != material_clones_.end()) return found->second;
     json m = material >= 0 ? original_materials_[size_t(material)] : json::object();
     if (material < 0) m["name"] = "radbake default material";
+    if (single_sided) {
+      m.erase("doubleSided");
+      m["name"] = m.value("name", "material " + std::to_string(material)) + " (one face)";
+    }
     m["extensions"]["MOZ_lightmap"] = {
         {"index", page_texture_[size_t(page)]}, {"texCoord", tex_coord}, {"intensity", lightmaps_.png_scale}};
     doc_["materials"].push_back(m);
     return material_clones_[key] = int(doc_["materials"].size() - 1);
   }
 
-  int remapped(int accessor_index, const std::vector<uint32_t>& source_vertex, BinaryWriter& bin) {
+  // Components [first, first + count) of every element negated: a back face's normals (all three)
+  // and its tangents' handedness (the fourth), floats or normalized signed integers.
+  static void negate(std::vector<uint8_t>& bytes, size_t element_size, int component_type, size_t first, size_t count) {
+    const size_t cs = component_size(component_type);
+    for (size_t at = 0; at + element_size <= bytes.size(); at += element_size)
+      for (size_t c = first; c < first + count && (c + 1) * cs <= element_size; ++c) {
+        uint8_t* p = &bytes[at + c * cs];
+        if (component_type == TINYGLTF_COMPONENT_TYPE_FLOAT) {
+          float v;
+          std::memcpy(&v, p, 4);
+          v = -v;
+          std::memcpy(p, &v, 4);
+        } else if (component_type == TINYGLTF_COMPONENT_TYPE_SHORT) {
+          int16_t v;
+          std::memcpy(&v, p, 2);
+          v = int16_t(-std::max<int>(v, -32767));
+          std::memcpy(p, &v, 2);
+        } else if (component_type == TINYGLTF_COMPONENT_TYPE_BYTE) {
+          *p = uint8_t(int8_t(-std::max<int>(int8_t(*p), -127)));
+        }
+      }
+  }
+
+  int remapped(int accessor_index, const std::vector<uint32_t>& source_vertex, BinaryWriter& bin,
+               const std::string& semantic = "", bool back = false) {
     size_t element_size;
     std::vector<uint8_t> bytes = accessor_bytes(src_.model, accessor_index, &element_size);
     std::vector<uint8_t> out(source_vertex.size() * element_size);
     for (size_t v = 0; v < source_vertex.size(); ++v)
       std::memcpy(&out[v * element_size], &bytes[size_t(source_vertex[v]) * element_size], element_size);
     const json& a = doc_["accessors"][size_t(accessor_index)];
+    if (back && semantic == "NORMAL") negate(out, element_size, a["componentType"].get<int>(), 0, 3);
+    if (back && semantic == "TANGENT") negate(out, element_size, a["componentType"].get<int>(), 3, 1);
     bool bounded = a.contains("min") && a.contains("max");
     return bin.add(out, source_vertex.size(), a["type"].get<std::string>().c_str(), a["componentType"].get<int>(),
                    a.value("normalized", false), kArrayBuffer, bounded);
@@ -234,7 +269,17 @@ class Writer {
     const MeshInstance& inst = scene_.instances[i];
     const AtlasMesh& lm = atlas_.meshes[i];
     const int mesh = mesh_for_node(inst.node, inst.mesh);
-    json& prim = doc_["meshes"][size_t(mesh)]["primitives"][size_t(inst.primitive)];
+    const bool back = inst.back_of >= 0;
+    json& primitives = doc_["meshes"][size_t(mesh)]["primitives"];
+    if (back) {
+      // A primitive of its own beside its front's: the front's source attributes, its own indices
+      // (reversed winding), lightmap UVs into its own charts, flipped normals.
+      json copy = original_meshes_[size_t(inst.mesh)]["primitives"][size_t(inst.primitive)];
+      if (!copy["extras"].is_object()) copy["extras"] = json::object();
+      copy["extras"]["radbake"] = {{"back_faces_of_primitive", inst.primitive}};
+      primitives.push_back(copy);
+    }
+    json& prim = primitives[back ? primitives.size() - 1 : size_t(inst.primitive)];
     // A working copy: inserting keys into an ordered_json object moves its members, so no
     // reference into `prim` may be held while it grows.
     json attributes = prim["attributes"];
@@ -246,10 +291,12 @@ class Writer {
     int lightmap_set = 1;
     if (!lm.kept_input_uvs) {
       // Remap every attribute through the atlas's vertex split.
-      for (auto it = attributes.begin(); it != attributes.end(); ++it) it.value() = remapped(it.value().get<int>(), lm.source_vertex, bin);
+      for (auto it = attributes.begin(); it != attributes.end(); ++it)
+        it.value() = remapped(it.value().get<int>(), lm.source_vertex, bin, it.key(), back);
       if (prim.contains("targets"))
         for (json& target : prim["targets"])
-          for (auto it = target.begin(); it != target.end(); ++it) it.value() = remapped(it.value().get<int>(), lm.source_vertex, bin);
+          for (auto it = target.begin(); it != target.end(); ++it)
+            it.value() = remapped(it.value().get<int>(), lm.source_vertex, bin, it.key(), back);
       bool set1_in_use = attributes.contains("TEXCOORD_1") && std::count(used_sets.begin(), used_sets.end(), 1);
       if (set1_in_use) {
         while (attributes.contains("TEXCOORD_" + std::to_string(lightmap_set))) ++lightmap_set;
@@ -289,7 +336,8 @@ class Writer {
     }
     attributes["COLOR_0"] = bin.add(as_bytes(colors), vertex_count, "VEC3", TINYGLTF_COMPONENT_TYPE_FLOAT, false, kArrayBuffer, false);
     prim["attributes"] = attributes;
-    prim["material"] = lightmap_material(prim.contains("material") ? prim["material"].get<int>() : -1, lm.page, lightmap_set);
+    prim["material"] = lightmap_material(prim.contains("material") ? prim["material"].get<int>() : -1, lm.page,
+                                         lightmap_set, back || has_back_[i]);
   }
 
   void add_extension_used(const std::string& ext) {
@@ -329,7 +377,8 @@ class Writer {
   json doc_, original_meshes_, original_materials_;
   std::map<int, int> mesh_of_node_;
   std::set<int> meshes_taken_;
-  std::map<std::tuple<int, int, int>, int> material_clones_;
+  std::map<std::tuple<int, int, int, bool>, int> material_clones_;
+  std::vector<uint8_t> has_back_;  // per instance: some of its triangles have back-face twins
   std::vector<int> page_texture_;
   float color_scale_ = 1;
   GltfOutput out_;

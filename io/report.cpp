@@ -28,13 +28,12 @@ void write_report(const std::string& path, const RunInfo& run, const Scene& scen
   for (const PlanDecision& d : bake.plan) plan.push_back({{"effect", d.effect}, {"choice", d.choice}, {"reason", d.reason}});
   json balance = {{"measured", bake.balance.measured}};
   if (bake.balance.measured)
-    balance.update({{"emitted_lm", bake.balance.emitted}, {"back_faces_lm", bake.balance.back_faces},
-                    {"absorbed_lm", bake.balance.absorbed}, {"escaped_lm", bake.balance.escaped},
-                    {"lost_lm", bake.balance.lost}, {"relative_error", bake.balance.relative_error},
-                    {"note", "mean of RGB channels; emitted counts emitting surfaces (both faces of double-sided "
-                             "ones) and what punctual lights deliver onto surfaces; back_faces is the light "
-                             "double-sided surfaces send again from their backs; lost is light striking back "
-                             "faces or buried texels"}});
+    balance.update({{"emitted_lm", bake.balance.emitted}, {"absorbed_lm", bake.balance.absorbed},
+                    {"escaped_lm", bake.balance.escaped}, {"lost_lm", bake.balance.lost},
+                    {"relative_error", bake.balance.relative_error},
+                    {"note", "mean of RGB channels; emitted counts emitting surfaces (the back faces of "
+                             "double-sided ones given texels of their own included) and what punctual lights "
+                             "deliver onto surfaces; lost is light striking back faces or buried texels"}});
   else
     balance["note"] = "the plan skipped interreflection, so no ray measured the light that escapes";
   const SceneSummary& s = scene.summary;

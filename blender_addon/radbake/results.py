@@ -68,6 +68,10 @@ class BakedScene:
         for prim in self.doc["meshes"][node["mesh"]]["primitives"]:
             if prim.get("mode", 4) != 4 or "COLOR_0" not in prim["attributes"]:
                 continue
+            # A double-sided face's back, baked apart: a Blender face has one UV and colour per
+            # corner, so the add-on brings back the fronts' light.
+            if "back_faces_of_primitive" in prim.get("extras", {}).get("radbake", {}):
+                continue
             material = self.doc["materials"][prim["material"]]
             lightmap = material["extensions"]["MOZ_lightmap"]
             uv_set = "TEXCOORD_%d" % lightmap["texCoord"]

@@ -23,7 +23,6 @@ const char* kEngine = "/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binar
 TEST(CadEngine, ReciprocityBalanceOfRowsThatAdmitNoScalingStaysFiniteAndCreatesNoLight) {
   Patches patches;
   patches.area = {5.35f, 100.0f};
-  patches.double_sided = {0, 0};
   MeasuredRows rows;
   rows.resize(2);
   rows.rows[0] = {{1, 1.0f}};

@@ -1,5 +1,6 @@
 // Writing the baked glTF: the input kept whole, lightmap UVs, COLOR_0 and MOZ_lightmap added,
-// instanced meshes split per node, the input's own TEXCOORD_1 kept; the output loads back.
+// instanced meshes split per node, the input's own TEXCOORD_1 kept, a double-sided face's back
+// as a primitive of its own; the output loads back.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -8,6 +9,7 @@
 
 #include "io/gltf.h"
 #include "io/lightmap_images.h"
+#include "support/commands.h"
 #include "support/scene_builders.h"
 
 namespace radbake {
@@ -121,6 +123,64 @@ TEST(GltfWriter, TheInputsOwnLightmapUvsAreKept) {
       EXPECT_EQ(a[v].y, b[v].y);
     }
   }
+}
+
+// A one-face double-sided ceiling (normal up) under the sun with a lamp below: its back is baked
+// apart, and written as a second primitive of the ceiling's mesh with lightmap UVs into its own
+// charts, flipped normals, reversed winding and a single-sided copy of the material, as is the
+// front's, so a viewer shows each face its own light. The Khronos validator finds no fault.
+TEST(GltfWriter, DoubleSidedFaceGetsABackPrimitiveWithItsOwnLightmapUvs) {
+  std::string folder = test::fresh_folder("writer_one_face_ceiling");
+  std::string input = test::source_path("tests/fixtures/one_face_ceiling.gltf");
+  std::string out = test::bake_file_to_folder(input, folder, {16, 128, 2});
+  json in = read_json(input), doc = read_json(out);
+  size_t ceiling_node = 0;
+  while (in["nodes"][ceiling_node].value("name", "") != "ceiling") ++ceiling_node;
+  const json& mesh = doc["meshes"][doc["nodes"][ceiling_node]["mesh"].get<size_t>()];
+  ASSERT_EQ(mesh["primitives"].size(), 2u);
+  const json &front = mesh["primitives"][0], &back = mesh["primitives"][1];
+  EXPECT_EQ(back["extras"]["radbake"]["back_faces_of_primitive"], 0);
+  for (const json* prim : {&front, &back}) {
+    const json& material = doc["materials"][(*prim)["material"].get<size_t>()];
+    EXPECT_FALSE(material.value("doubleSided", false)) << material["name"];
+    EXPECT_TRUE(material["extensions"].contains("MOZ_lightmap"));
+  }
+  // The back's UVs are its own: another accessor, over a rectangle apart from the front's.
+  const json &uv_front = doc["accessors"][front["attributes"]["TEXCOORD_1"].get<size_t>()],
+             &uv_back = doc["accessors"][back["attributes"]["TEXCOORD_1"].get<size_t>()];
+  EXPECT_NE(front["attributes"]["TEXCOORD_1"], back["attributes"]["TEXCOORD_1"]);
+  bool apart = false;
+  for (int a = 0; a < 2; ++a)
+    apart |= uv_back["min"][a].get<double>() >= uv_front["max"][a].get<double>() ||
+             uv_front["min"][a].get<double>() >= uv_back["max"][a].get<double>();
+  EXPECT_TRUE(apart) << uv_front << uv_back;
+  // Every other mesh, single-sided, keeps one primitive.
+  for (size_t n = 0; n < doc["nodes"].size(); ++n) {
+    if (n == ceiling_node || !doc["nodes"][n].contains("mesh")) continue;
+    EXPECT_EQ(doc["meshes"][doc["nodes"][n]["mesh"].get<size_t>()]["primitives"].size(), 1u);
+  }
+
+  // Loaded back: the back primitive faces down (its winding and its normals), the front up.
+  LoadedScene baked = load_gltf(out);
+  std::vector<const MeshInstance*> ceiling;
+  for (const MeshInstance& inst : baked.scene.instances)
+    if (inst.node == int(ceiling_node)) ceiling.push_back(&inst);
+  ASSERT_EQ(ceiling.size(), 2u);
+  for (const MeshInstance* inst : ceiling) {
+    const float up = inst->primitive == 0 ? 1.0f : -1.0f;
+    const Vec3* p = inst->positions.data();
+    const uint32_t* t = inst->triangles.data();
+    EXPECT_GT(up * cross(p[t[1]] - p[t[0]], p[t[2]] - p[t[0]]).y, 0) << inst->primitive;
+    for (Vec3 n : inst->normals) EXPECT_EQ(n.y, up) << inst->primitive;
+  }
+
+  ASSERT_TRUE(fs::exists(test::source_path("tests/tools/node_modules/gltf-validator")))
+      << "the validator is not installed: run ./dev test (npm ci in tests/tools)";
+  test::Outcome v = test::run("node " + test::source_path("tests/tools/validate_gltf.mjs") + " " + out);
+  EXPECT_EQ(v.status, 0) << v.out << v.err;
+  json summary = json::parse(v.out);
+  EXPECT_EQ(summary["errors"], 0) << v.out;
+  EXPECT_EQ(summary["warnings"], 0) << v.out;
 }
 
 TEST(GltfWriter, ExtrasAndUnknownExtensionsSurvive) {

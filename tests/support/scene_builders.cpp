@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "io/gltf.h"
+#include "baker/back_faces.h"
 #include "baker/surface.h"
 #include "io/lightmap_images.h"
 
@@ -125,7 +126,8 @@ MeshInstance bumpy_torus(int rings, int segments) {
   return inst;
 }
 
-Baked bake_scene(const Scene& scene, const AtlasOptions& atlas_options, const BakeOptions& options) {
+Baked bake_scene(Scene scene, const AtlasOptions& atlas_options, const BakeOptions& options) {
+  add_back_faces(scene);
   Baked b;
   b.atlas = unwrap(scene, atlas_options);
   b.result = bake(scene, b.atlas, options);
@@ -159,6 +161,7 @@ Rgb mean_irradiance(const BakeResult& r, const std::function<bool(Vec3, Vec3)>& 
 std::string bake_file_to_folder(const std::string& input, const std::string& folder, const AtlasOptions& atlas_options,
                                 const BakeOptions& options) {
   LoadedScene loaded = load_gltf(input);
+  add_back_faces(loaded.scene);
   Baked b;
   b.atlas = unwrap(loaded.scene, atlas_options);
   b.result = bake(loaded.scene, b.atlas, options);

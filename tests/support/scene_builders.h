@@ -51,7 +51,8 @@ struct Baked {
   Atlas atlas;
   BakeResult result;
 };
-Baked bake_scene(const Scene& scene, const AtlasOptions& atlas_options, const BakeOptions& options);
+// Gives double-sided backs their twins (add_back_faces), unwraps and bakes, as the command does.
+Baked bake_scene(Scene scene, const AtlasOptions& atlas_options, const BakeOptions& options);
 
 // True when both bakes' lightmap pages are bit for bit the same.
 bool same_pages(const std::vector<LightmapPage>& a, const std::vector<LightmapPage>& b);
