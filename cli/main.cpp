@@ -32,6 +32,10 @@ size_t peak_memory_bytes() {
   return size_t(usage.ru_maxrss) * 1024;
 }
 
+// One line whatever the message quotes: each quoted piece of user text should be clipped where the
+// message is made, and this bounds the line when one was not.
+void print_error(const std::exception& e) { std::fprintf(stderr, "radbake: error: %s\n", radbake::clipped(e.what(), 600).c_str()); }
+
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -128,7 +132,7 @@ int run_bake(const radbake::BakeCommand& cmd) {
   folder.commit();
 
   if (!cmd.quiet)
-    for (const std::string& w : warnings) std::fprintf(stderr, "radbake: warning: %s\n", w.c_str());
+    for (const std::string& w : warnings) std::fprintf(stderr, "radbake: warning: %s\n", clipped(w, 600).c_str());
   char balance[64] = "energy balance not measured";
   if (result.report.balance.measured)
     std::snprintf(balance, sizeof balance, "energy balance %.3f%%", 100.0 * result.report.balance.relative_error);
@@ -169,7 +173,7 @@ void print_stats(const radbake::Atlas& atlas, const radbake::UvCommand& cmd, dou
   std::printf("  flipped triangles   %zu\n", s.flipped_triangles);
   std::printf("  padding violations  %zu (padding %d texels)\n", s.padding_violations, cmd.atlas.padding);
   if (cmd.evaluate_texcoord < 0) std::printf("  time                %.3f s\n", s.seconds);
-  for (const std::string& w : atlas.warnings) std::fprintf(stderr, "radbake: warning: %s\n", w.c_str());
+  for (const std::string& w : atlas.warnings) std::fprintf(stderr, "radbake: warning: %s\n", radbake::clipped(w, 600).c_str());
 }
 
 int run_uv(const radbake::UvCommand& cmd) {
@@ -211,16 +215,16 @@ int main(int argc, char** argv) {
       case Action::Diff: return run_diff(cl.diff);
     }
   } catch (const UsageError& e) {
-    std::fprintf(stderr, "radbake: error: %s\n", e.what());
+    print_error(e);
     return 2;
   } catch (const InputError& e) {
-    std::fprintf(stderr, "radbake: error: %s\n", e.what());
+    print_error(e);
     return 2;
   } catch (const Cancelled&) {
     std::fprintf(stderr, "\nradbake: cancelled; nothing was written\n");
     return 1;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "radbake: error: %s\n", e.what());
+    print_error(e);
     return 1;
   }
   return 1;

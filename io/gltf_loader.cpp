@@ -19,12 +19,12 @@ const std::set<std::string> kSupportedRequired = {"KHR_lights_punctual", "KHR_ma
 std::string one_line(std::string text) {
   std::replace(text.begin(), text.end(), '\n', ' ');
   while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.pop_back();
-  return text;
+  return clipped(text, 300);
 }
 
 std::vector<uint8_t> read_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open file");
+  if (!in) throw InputError(clipped(path) + ": cannot open file");
   return std::vector<uint8_t>(std::istreambuf_iterator<char>(in), {});
 }
 
@@ -395,7 +395,8 @@ class SceneBuilder {
 LoadedScene load_gltf(const std::string& path) {
   namespace fs = std::filesystem;
   std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) throw InputError(path + ": no such file");
+  if (!fs::is_regular_file(path, ec))
+    throw InputError(clipped(path) + (fs::exists(path, ec) ? ": not a regular file (a folder, pipe or device)" : ": no such file"));
   auto src = std::make_shared<GltfSource>();
   src->path = path;
   src->base_dir = fs::path(path).parent_path().string();
@@ -409,7 +410,7 @@ LoadedScene load_gltf(const std::string& path) {
                 ? loader.LoadBinaryFromMemory(&src->model, &err, &warn, bytes.data(), unsigned(bytes.size()), src->base_dir)
                 : loader.LoadASCIIFromString(&src->model, &err, &warn, reinterpret_cast<const char*>(bytes.data()),
                                              unsigned(bytes.size()), src->base_dir);
-  if (!ok) throw InputError(path + ": " + one_line(err.empty() ? "not a valid glTF file" : err));
+  if (!ok) throw InputError(clipped(path) + ": " + one_line(err.empty() ? "not a valid glTF file" : err));
   if (src->binary) split_glb(bytes, *src);
   else src->json_text.assign(bytes.begin(), bytes.end());
 
