@@ -127,6 +127,8 @@ int run_bake(const radbake::BakeCommand& cmd) {
   warnings.insert(warnings.end(), gltf.warnings.begin(), gltf.warnings.end());
   run.total_seconds = seconds_since(start);
   run.peak_memory_bytes = peak_memory_bytes();
+  run.files = folder.files();
+  run.files.push_back("report.json");  // the list is in it
   write_report((std::filesystem::path(folder.path()) / "report.json").string(), run, loaded.scene, atlas,
                result.report, files, warnings);
   folder.commit();
