@@ -113,6 +113,7 @@ lightmap UV options (bake and uv):
 
 bake options:
   -o, --output DIR        output folder (required); replaced only if it is an earlier radbake output
+                          holding nothing but the files it wrote; one bake at a time per folder
   --quality NAME          draft | preview | production | reference: ray counts, tolerance and
                           patch size together (default preview; docs/accuracy.md has each
                           preset's measured error and time); options given as well override it
@@ -165,7 +166,8 @@ diff options:
   -h, --help              this text
   --version               print the version
 
-exit status: 0 done, 2 bad input or usage, 1 anything else;
+exit status: 0 done, 2 bad input or usage, 1 anything else, 130/143 ended by SIGINT/SIGTERM
+(nothing is left behind);
 diff: 0 when every threshold holds, 1 when one is exceeded (named on stderr), 2 bad input or usage
 )";
 }

@@ -2,9 +2,7 @@
 // compare two bakes (cli/diff_command).
 #include <sys/resource.h>
 
-#include <atomic>
 #include <chrono>
-#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -14,6 +12,7 @@
 #include "baker/surface.h"
 #include "cli/command_line.h"
 #include "cli/diff_command.h"
+#include "cli/interrupts.h"
 #include "cli/progress_display.h"
 #include "io/debug_dumps.h"
 #include "io/gltf.h"
@@ -22,9 +21,6 @@
 #include "io/report.h"
 
 namespace {
-
-std::atomic<bool> interrupted{false};
-void on_interrupt(int) { interrupted = true; }
 
 size_t peak_memory_bytes() {
   rusage usage{};
@@ -78,28 +74,32 @@ int run_bake(const radbake::BakeCommand& cmd) {
   auto t = std::chrono::steady_clock::now();
   LoadedScene loaded = load_gltf(cmd.input);
   run.io_times.push_back({"load", seconds_since(t)});
+  stop_if_interrupted();
   // Planned before anything is written or unwrapped, so a scene with no light fails at once.
   const EffectPlan plan = plan_effects(loaded.scene, cmd.bake.plan);
   if (!cmd.quiet)
     for (const PlanDecision& d : plan.decisions)
       std::fprintf(stderr, "radbake: plan: %s: %s (%s)\n", d.effect.c_str(), d.choice.c_str(), d.reason.c_str());
   StagedFolder folder(cmd.output);
-
-  t = std::chrono::steady_clock::now();
-  Atlas atlas = ensure_lightmap_uvs(mesh_views(loaded.scene), cmd.atlas);
-  run.io_times.push_back({"lightmap uvs", seconds_since(t)});
+  AbandonOnInterrupt abandon_on_interrupt(folder);
 
   ProgressDisplay display(!cmd.quiet);
+  const ProgressCallback progress = [&](const std::string& stage, double fraction) {
+    display.update(stage, fraction);
+    return !interrupted();
+  };
+  t = std::chrono::steady_clock::now();
+  AtlasOptions atlas_options = cmd.atlas;
+  atlas_options.progress = progress;
+  Atlas atlas = ensure_lightmap_uvs(mesh_views(loaded.scene), atlas_options);
+  run.io_times.push_back({"lightmap uvs", seconds_since(t)});
+
   BakeOptions options = cmd.bake;
   options.keep_direct = cmd.debug_dumps;
   const std::string name = std::filesystem::path(cmd.input).stem().string();
   PreviewWriter previews(folder.path(), name, cmd.quiet);
   BakeResult result = bake(
-      loaded.scene, atlas, options, plan,
-      [&](const std::string& stage, double fraction) {
-        display.update(stage, fraction);
-        return !interrupted.load();
-      },
+      loaded.scene, atlas, options, plan, progress,
       [&](const std::vector<LightmapPage>& pages, size_t iteration) { previews.write(pages, iteration); });
   display.finish();
   if (!cmd.quiet)
@@ -116,8 +116,10 @@ int run_bake(const radbake::BakeCommand& cmd) {
   result.irradiance = {};
   result.direct = {};
   float scale = cmd.png_scale > 0 ? cmd.png_scale : automatic_png_scale(result.pages);
+  stop_if_interrupted();
   LightmapFiles files = write_lightmaps(result.pages, folder.path(), name, irradiance ? "irradiance" : "radiosity",
                                         irradiance ? "lx" : "lm/m2", scale);
+  stop_if_interrupted();
   GltfOutput gltf = write_gltf(*loaded.source, loaded.scene, atlas, result.vertex_values, files, folder.path(), name);
   run.io_times.push_back({"write", seconds_since(t)});
 
@@ -131,6 +133,7 @@ int run_bake(const radbake::BakeCommand& cmd) {
   run.files.push_back("report.json");  // the list is in it
   write_report((std::filesystem::path(folder.path()) / "report.json").string(), run, loaded.scene, atlas,
                result.report, files, warnings);
+  stop_if_interrupted();
   folder.commit();
 
   if (!cmd.quiet)
@@ -185,7 +188,9 @@ int run_uv(const radbake::UvCommand& cmd) {
   double load_seconds = seconds_since(t);
   std::vector<MeshView> views = mesh_views(loaded.scene);
   if (cmd.evaluate_texcoord < 0) {
-    print_stats(ensure_lightmap_uvs(views, cmd.atlas), cmd, load_seconds);
+    AtlasOptions options = cmd.atlas;
+    options.progress = [](const std::string&, double) { return !interrupted(); };
+    print_stats(ensure_lightmap_uvs(views, options), cmd, load_seconds);
     return 0;
   }
   std::vector<const Vec2*> uvs;
@@ -205,8 +210,7 @@ int run_uv(const radbake::UvCommand& cmd) {
 
 int main(int argc, char** argv) {
   using namespace radbake;
-  std::signal(SIGINT, on_interrupt);
-  std::signal(SIGTERM, on_interrupt);
+  watch_interrupts();
   try {
     CommandLine cl = parse_command_line(std::vector<std::string>(argv + 1, argv + argc));
     switch (cl.action) {
@@ -224,7 +228,7 @@ int main(int argc, char** argv) {
     return 2;
   } catch (const Cancelled&) {
     std::fprintf(stderr, "\nradbake: cancelled; nothing was written\n");
-    return 1;
+    return interrupted_exit_status();
   } catch (const std::exception& e) {
     print_error(e);
     return 1;

@@ -146,5 +146,60 @@ TEST(OutputFolder, AnOutputWhoseReportListsNoFilesIsNotReplaced) {
   EXPECT_TRUE(fs::exists(parent + "/out/report.json"));
 }
 
+// A glTF of one mesh lit by a point light, written as .gltf + .bin.
+std::string write_lit_mesh(const std::string& folder, const MeshInstance& mesh) {
+  std::ofstream bin(folder + "/mesh.bin", std::ios::binary);
+  bin.write(reinterpret_cast<const char*>(mesh.positions.data()), std::streamsize(mesh.positions.size() * sizeof(Vec3)));
+  bin.write(reinterpret_cast<const char*>(mesh.triangles.data()), std::streamsize(mesh.triangles.size() * 4));
+  const size_t positions = mesh.positions.size() * sizeof(Vec3), indices = mesh.triangles.size() * 4;
+  Vec3 lo{1e30f, 1e30f, 1e30f}, hi{-1e30f, -1e30f, -1e30f};
+  for (Vec3 p : mesh.positions) {
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+  }
+  nlohmann::json gltf = {
+      {"asset", {{"version", "2.0"}}},
+      {"extensionsUsed", {"KHR_lights_punctual"}},
+      {"extensions", {{"KHR_lights_punctual", {{"lights", {{{"type", "point"}, {"intensity", 100}}}}}}}},
+      {"scene", 0},
+      {"scenes", {{{"nodes", {0, 1}}}}},
+      {"nodes", {{{"mesh", 0}}, {{"translation", {0, 2, 0}}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}}}},
+      {"meshes", {{{"primitives", {{{"attributes", {{"POSITION", 0}}}, {"indices", 1}}}}}}},
+      {"buffers", {{{"uri", "mesh.bin"}, {"byteLength", positions + indices}}}},
+      {"bufferViews", {{{"buffer", 0}, {"byteLength", positions}},
+                       {{"buffer", 0}, {"byteOffset", positions}, {"byteLength", indices}}}},
+      {"accessors", {{{"bufferView", 0}, {"componentType", 5126}, {"count", mesh.positions.size()}, {"type", "VEC3"},
+                      {"min", {lo.x, lo.y, lo.z}}, {"max", {hi.x, hi.y, hi.z}}},
+                     {{"bufferView", 1}, {"componentType", 5125}, {"count", mesh.triangles.size()}, {"type", "SCALAR"}}}},
+  };
+  std::ofstream(folder + "/mesh.gltf") << gltf.dump();
+  return folder + "/mesh.gltf";
+}
+
+TEST(Interrupt, SigtermDuringLightmapUvGenerationEndsTheBakeAndLeavesNothing) {
+  const std::string parent = test::fresh_folder("outdir_sigterm_uv");
+  fs::create_directories(parent + "/in");
+  // 400,000 triangles: unwrapping alone took 10 s of CPU (25 s on the shared 2-core machine) when
+  // measured; the bake would take minutes more.
+  const std::string scene = write_lit_mesh(parent + "/in", test::bumpy_torus(500, 400));
+  pid_t bake = start_radbake({"bake", scene, "-o", parent + "/out"}, parent + "/log");
+  // The staging folder is made just before the unwrap starts.
+  ASSERT_TRUE(wait_for_staging(parent, bake)) << test::slurp(parent + "/log");
+  std::this_thread::sleep_for(std::chrono::seconds(1));
+  const auto signalled = Clock::now();
+  kill(bake, SIGTERM);
+  const int status = exit_status(bake);
+  const double seconds = std::chrono::duration<double>(Clock::now() - signalled).count();
+  std::printf("exited %.2f s after SIGTERM\n", seconds);
+  const std::string log = test::slurp(parent + "/log");
+  EXPECT_EQ(status, 143) << log;
+  EXPECT_LT(seconds, 10.0);  // 0.15 to 0.25 s measured; polls at least every 50 ms of unwrapping
+  EXPECT_NE(log.find("radbake: lightmap uvs"), std::string::npos) << log;
+  EXPECT_EQ(log.find("radbake: elements"), std::string::npos) << log;  // it was still unwrapping
+  EXPECT_NE(log.find("radbake: cancelled; nothing was written"), std::string::npos) << log;
+  EXPECT_FALSE(fs::exists(parent + "/out"));
+  EXPECT_TRUE(leftovers(parent).empty());
+}
+
 }  // namespace
 }  // namespace radbake
