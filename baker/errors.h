@@ -16,6 +16,23 @@ struct NonFiniteValue : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// User text (a path, a URI, a name, tinygltf's message that may hold a whole data URI) as an error
+// line quotes it: control characters shown as '?', so the message stays one line, and anything
+// longer than `max` bytes cut in the middle, so a 100 MB URI cannot flood a terminal or a log.
+inline std::string clipped(const std::string& text, size_t max = 100) {
+  std::string out = text;
+  for (char& c : out)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
+  if (out.size() <= max) return out;
+  // Cut on UTF-8 character boundaries (never before a continuation byte).
+  auto boundary = [&](size_t at) {
+    while (at > 0 && (static_cast<unsigned char>(out[at]) & 0xc0) == 0x80) --at;
+    return at;
+  };
+  const size_t head = boundary(max * 2 / 3), tail = boundary(out.size() - (max - max * 2 / 3 - 3));
+  return out.substr(0, head) + "..." + out.substr(tail);
+}
+
 // Thrown out of a stage when the progress callback asks to stop.
 struct Cancelled : std::runtime_error {
   Cancelled() : std::runtime_error("cancelled") {}

@@ -2,31 +2,39 @@
 
 #include <cctype>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <functional>
 #include <map>
 #include <sstream>
 
+#include "baker/errors.h"
+
 namespace radbake {
 namespace {
 
+std::string number_text(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, v == std::floor(v) && std::fabs(v) < 1e16 ? "%.0f" : "%g", v);
+  return text;
+}
+
+// `text` as the user typed it, for a message naming the option.
+std::string got(const std::string& text) { return ", got '" + clipped(text) + "'"; }
+
 double parse_number(const std::string& option, const std::string& text, double lo, double hi) {
-  size_t used = 0;
-  double v = 0;
-  try {
-    v = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != text.size() || !std::isfinite(v))
-    throw UsageError("option " + option + " needs a number, got '" + text + "'");
+  // strtod, not stod: a value too large for a double is out of range (HUGE_VAL), not "no number".
+  char* end = nullptr;
+  const double v = text.empty() ? NAN : std::strtod(text.c_str(), &end);
+  if (end != text.c_str() + text.size() || std::isnan(v)) throw UsageError("option " + option + " needs a number" + got(text));
   if (v < lo || v > hi)
-    throw UsageError("option " + option + " must be between " + std::to_string(lo) + " and " + std::to_string(hi));
+    throw UsageError("option " + option + " must be between " + number_text(lo) + " and " + number_text(hi) + got(text));
   return v;
 }
 
 long parse_integer(const std::string& option, const std::string& text, long lo, long hi) {
   double v = parse_number(option, text, double(lo), double(hi));
-  if (v != std::floor(v)) throw UsageError("option " + option + " needs a whole number, got '" + text + "'");
+  if (v != std::floor(v)) throw UsageError("option " + option + " needs a whole number" + got(text));
   return long(v);
 }
 
@@ -62,7 +70,7 @@ void apply_quality_preset(const std::string& name, BakeOptions& bake) {
       bake.patches.block_size = p.patch_size;
       return;
     }
-  throw UsageError("option --quality must be draft, preview, production or reference, got '" + name + "'");
+  throw UsageError("option --quality must be draft, preview, production or reference" + got(name));
 }
 
 const char* usage_text() {
@@ -113,6 +121,7 @@ lightmap UV options (bake and uv):
 
 bake options:
   -o, --output DIR        output folder (required); replaced only if it is an earlier radbake output
+                          holding nothing but the files it wrote; one bake at a time per folder
   --quality NAME          draft | preview | production | reference: ray counts, tolerance and
                           patch size together (default preview; docs/accuracy.md has each
                           preset's measured error and time); options given as well override it
@@ -121,7 +130,7 @@ bake options:
   --threads N             worker threads, 0 = all cores (default 0)
   --seed N                random seed; same seed, same output (default 1)
   --store WHAT            irradiance (lux) | radiosity (lm/m2) per texel and vertex (default irradiance)
-  --gather-rays N         hemisphere rays per texel for indirect light (default 256)
+  --gather-rays N         hemisphere rays per texel for indirect light, 1..1048576 (default 256)
   --form-factors METHOD   raycast | hemicube: how form factors between patches are measured
                           (default raycast)
   --patch-rays N          raycast: rays per patch for form factors (default 2048)
@@ -133,10 +142,11 @@ bake options:
                           PNG pages into OUTDIR/preview/ (default 0 = none)
   --area-light-rays N     shadow rays per texel per emitting triangle (default 16)
   --light-rays N          shadow rays per texel per punctual light (default 4)
-  --patch-size N          patch side in texels, a power of two, 0 = auto (default 0)
+  --patch-size N          patch side in texels, a power of two up to 16384, 0 = auto (default 0)
   --png-scale X|auto      value (lux or lm/m2) that the PNG encodes as white (default auto)
-  --emission-scale X      multiply glTF emission before reading it as cd/m2 (default 1; 683 for
-                          Blender's exporter, which converts lamps to candela but not emission)
+  --emission-scale X      multiply glTF emission before reading it as cd/m2, 1e-6..1e9 (default 1;
+                          683 for Blender's exporter, which converts lamps to candela but not
+                          emission)
   --no-ambient            leave out the ambient estimate of the light still unshot
   --direct-only           direct light only: no light between surfaces
   --simulate-everything   skip nothing the effect plan would skip (one colour channel, no
@@ -164,7 +174,8 @@ diff options:
   -h, --help              this text
   --version               print the version
 
-exit status: 0 done, 2 bad input or usage, 1 anything else;
+exit status: 0 done, 2 bad input or usage, 1 anything else, 130/143 ended by SIGINT/SIGTERM
+(nothing is left behind);
 diff: 0 when every threshold holds, 1 when one is exceeded (named on stderr), 2 bad input or usage
 )";
 }
@@ -183,7 +194,7 @@ void atlas_options(AtlasOptions& a, std::map<std::string, Setter>& with_value, s
     if (v == "keep-valid") a.input_uvs = InputUvPolicy::KeepValid;
     else if (v == "keep") a.input_uvs = InputUvPolicy::KeepAll;
     else if (v == "generate") a.input_uvs = InputUvPolicy::Generate;
-    else throw UsageError("option --lightmap-uvs must be keep-valid, keep or generate, got '" + v + "'");
+    else throw UsageError("option --lightmap-uvs must be keep-valid, keep or generate" + got(v));
   };
   with_value["--chart-angle"] = [&](const std::string& v) { a.max_chart_normal_deviation = float(parse_number("--chart-angle", v, 1, 89)); };
   flags["--no-rotate"] = [&] { a.rotate_charts = false; };
@@ -236,7 +247,7 @@ void parse_options(const std::vector<std::string>& args, const std::map<std::str
       inline_value = true;
     }
     auto setter = with_value.find(arg);
-    if (setter == with_value.end()) throw UsageError("unknown option " + arg + " (see radbake --help)");
+    if (setter == with_value.end()) throw UsageError("unknown option " + clipped(arg) + " (see radbake --help)");
     if (!inline_value) {
       if (i + 1 >= args.size()) throw UsageError("option " + arg + " needs a value");
       value = args[++i];
@@ -256,7 +267,7 @@ void parse_uv(const std::vector<std::string>& args, CommandLine& cl) {
   flags["--json"] = [&] { u.json = true; };
   bool help = false;
   parse_options(args, with_value, flags, [&](const std::string& arg) {
-    if (!u.input.empty()) throw UsageError("unexpected argument '" + arg + "' (one scene at a time)");
+    if (!u.input.empty()) throw UsageError("unexpected argument '" + clipped(arg) + "' (one scene at a time)");
     u.input = arg;
   }, help);
   if (help) {
@@ -285,7 +296,7 @@ void parse_diff(const std::vector<std::string>& args, CommandLine& cl) {
   parse_options(args, with_value, flags, [&](const std::string& arg) {
     if (d.reference.empty()) d.reference = arg;
     else if (d.candidate.empty()) d.candidate = arg;
-    else throw UsageError("unexpected argument '" + arg + "' (radbake diff compares two bakes)");
+    else throw UsageError("unexpected argument '" + clipped(arg) + "' (radbake diff compares two bakes)");
   }, help);
   if (help) {
     cl.action = Action::Help;
@@ -314,7 +325,7 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
     parse_diff(args, cl);
     return cl;
   }
-  if (args[0] != "bake") throw UsageError("unknown command '" + args[0] + "' (try radbake --help)");
+  if (args[0] != "bake") throw UsageError("unknown command '" + clipped(args[0]) + "' (try radbake --help)");
   cl.action = Action::Bake;
   BakeCommand& b = cl.bake;
 
@@ -325,25 +336,25 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
          if (v == "shooting") b.bake.solve.solver = Solver::Shooting;
          else if (v == "gauss-seidel") b.bake.solve.solver = Solver::GaussSeidel;
          else if (v == "jacobi") b.bake.solve.solver = Solver::Jacobi;
-         else throw UsageError("option --solver must be shooting, gauss-seidel or jacobi, got '" + v + "'");
+         else throw UsageError("option --solver must be shooting, gauss-seidel or jacobi" + got(v));
        }},
       {"--threads", [&](const std::string& v) { b.bake.threads = int(parse_integer("--threads", v, 0, 1024)); }},
       {"--seed", [&](const std::string& v) { b.bake.seed = uint64_t(parse_integer("--seed", v, 0, 1L << 53)); }},
       {"--store", [&](const std::string& v) {
          if (v == "irradiance") b.bake.store = StoredQuantity::Irradiance;
          else if (v == "radiosity") b.bake.store = StoredQuantity::Radiosity;
-         else throw UsageError("option --store must be irradiance or radiosity, got '" + v + "'");
+         else throw UsageError("option --store must be irradiance or radiosity" + got(v));
        }},
-      {"--gather-rays", [&](const std::string& v) { b.bake.gather_rays = uint32_t(parse_integer("--gather-rays", v, 0, 1 << 20)); }},
+      {"--gather-rays", [&](const std::string& v) { b.bake.gather_rays = uint32_t(parse_integer("--gather-rays", v, 1, 1 << 20)); }},
       {"--patch-rays", [&](const std::string& v) { b.bake.form_factors.rays_per_patch = uint32_t(parse_integer("--patch-rays", v, 16, 1 << 24)); }},
       {"--form-factors", [&](const std::string& v) {
          if (v == "raycast") b.bake.form_factors.method = FormFactorMethod::RayCast;
          else if (v == "hemicube") b.bake.form_factors.method = FormFactorMethod::Hemicube;
-         else throw UsageError("option --form-factors must be raycast or hemicube, got '" + v + "'");
+         else throw UsageError("option --form-factors must be raycast or hemicube" + got(v));
        }},
       {"--hemicube-resolution", [&](const std::string& v) {
          long r = parse_integer("--hemicube-resolution", v, 2, 4096);
-         if (r % 2) throw UsageError("option --hemicube-resolution must be even, got '" + v + "'");
+         if (r % 2) throw UsageError("option --hemicube-resolution must be even" + got(v));
          b.bake.form_factors.hemicube_resolution = int(r);
        }},
       {"--subdivide", [&](const std::string& v) { b.bake.subdivision.tolerance = parse_number("--subdivide", v, 0, 10); }},
@@ -352,8 +363,12 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
       {"--quality", [](const std::string&) {}},  // applied before the others, below
       {"--area-light-rays", [&](const std::string& v) { b.bake.direct.area_light_rays = int(parse_integer("--area-light-rays", v, 1, 1 << 16)); }},
       {"--light-rays", [&](const std::string& v) { b.bake.direct.punctual_rays = int(parse_integer("--light-rays", v, 1, 1 << 16)); }},
-      {"--patch-size", [&](const std::string& v) { b.bake.patches.block_size = int(parse_integer("--patch-size", v, 0, 16384)); }},
-      {"--emission-scale", [&](const std::string& v) { b.bake.emission_scale = float(parse_number("--emission-scale", v, 0, 1e9)); }},
+      {"--patch-size", [&](const std::string& v) {
+         long size = parse_integer("--patch-size", v, 0, 16384);
+         if (size & (size - 1)) throw UsageError("option --patch-size must be 0 (auto) or a power of two up to 16384" + got(v));
+         b.bake.patches.block_size = int(size);
+       }},
+      {"--emission-scale", [&](const std::string& v) { b.bake.emission_scale = float(parse_number("--emission-scale", v, 1e-6, 1e9)); }},
       {"--png-scale", [&](const std::string& v) { b.png_scale = v == "auto" ? 0.0f : float(parse_number("--png-scale", v, 1e-30, 1e30)); }},
   };
   std::map<std::string, Flag> flags = {
@@ -374,7 +389,7 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
     }
   bool help = false;
   parse_options(args, with_value, flags, [&](const std::string& arg) {
-    if (!b.input.empty()) throw UsageError("unexpected argument '" + arg + "' (one scene per bake)");
+    if (!b.input.empty()) throw UsageError("unexpected argument '" + clipped(arg) + "' (one scene per bake)");
     b.input = arg;
   }, help);
   if (help) {

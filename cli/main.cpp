@@ -2,9 +2,7 @@
 // compare two bakes (cli/diff_command).
 #include <sys/resource.h>
 
-#include <atomic>
 #include <chrono>
-#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -15,6 +13,7 @@
 #include "baker/surface.h"
 #include "cli/command_line.h"
 #include "cli/diff_command.h"
+#include "cli/interrupts.h"
 #include "cli/progress_display.h"
 #include "io/debug_dumps.h"
 #include "io/gltf.h"
@@ -24,14 +23,15 @@
 
 namespace {
 
-std::atomic<bool> interrupted{false};
-void on_interrupt(int) { interrupted = true; }
-
 size_t peak_memory_bytes() {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   return size_t(usage.ru_maxrss) * 1024;
 }
+
+// One line whatever the message quotes: each quoted piece of user text should be clipped where the
+// message is made, and this bounds the line when one was not.
+void print_error(const std::exception& e) { std::fprintf(stderr, "radbake: error: %s\n", radbake::clipped(e.what(), 600).c_str()); }
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -77,28 +77,32 @@ int run_bake(const radbake::BakeCommand& cmd) {
   check_bake_budget(loaded, cmd.atlas, cmd.load, cmd.input);
   add_back_faces(loaded.scene);
   run.io_times.push_back({"load", seconds_since(t)});
+  stop_if_interrupted();
   // Planned before anything is written or unwrapped, so a scene with no light fails at once.
   const EffectPlan plan = plan_effects(loaded.scene, cmd.bake.plan);
   if (!cmd.quiet)
     for (const PlanDecision& d : plan.decisions)
       std::fprintf(stderr, "radbake: plan: %s: %s (%s)\n", d.effect.c_str(), d.choice.c_str(), d.reason.c_str());
   StagedFolder folder(cmd.output);
-
-  t = std::chrono::steady_clock::now();
-  Atlas atlas = ensure_lightmap_uvs(mesh_views(loaded.scene), cmd.atlas);
-  run.io_times.push_back({"lightmap uvs", seconds_since(t)});
+  AbandonOnInterrupt abandon_on_interrupt(folder);
 
   ProgressDisplay display(!cmd.quiet);
+  const ProgressCallback progress = [&](const std::string& stage, double fraction) {
+    display.update(stage, fraction);
+    return !interrupted();
+  };
+  t = std::chrono::steady_clock::now();
+  AtlasOptions atlas_options = cmd.atlas;
+  atlas_options.progress = progress;
+  Atlas atlas = ensure_lightmap_uvs(mesh_views(loaded.scene), atlas_options);
+  run.io_times.push_back({"lightmap uvs", seconds_since(t)});
+
   BakeOptions options = cmd.bake;
   options.keep_direct = cmd.debug_dumps;
   const std::string name = std::filesystem::path(cmd.input).stem().string();
   PreviewWriter previews(folder.path(), name, cmd.quiet);
   BakeResult result = bake(
-      loaded.scene, atlas, options, plan,
-      [&](const std::string& stage, double fraction) {
-        display.update(stage, fraction);
-        return !interrupted.load();
-      },
+      loaded.scene, atlas, options, plan, progress,
       [&](const std::vector<LightmapPage>& pages, size_t iteration) { previews.write(pages, iteration); });
   display.finish();
   if (!cmd.quiet)
@@ -115,8 +119,10 @@ int run_bake(const radbake::BakeCommand& cmd) {
   result.irradiance = {};
   result.direct = {};
   float scale = cmd.png_scale > 0 ? cmd.png_scale : automatic_png_scale(result.pages);
+  stop_if_interrupted();
   LightmapFiles files = write_lightmaps(result.pages, folder.path(), name, irradiance ? "irradiance" : "radiosity",
                                         irradiance ? "lx" : "lm/m2", scale);
+  stop_if_interrupted();
   GltfOutput gltf = write_gltf(*loaded.source, loaded.scene, atlas, result.vertex_values, files, folder.path(), name);
   run.io_times.push_back({"write", seconds_since(t)});
 
@@ -126,12 +132,15 @@ int run_bake(const radbake::BakeCommand& cmd) {
   warnings.insert(warnings.end(), gltf.warnings.begin(), gltf.warnings.end());
   run.total_seconds = seconds_since(start);
   run.peak_memory_bytes = peak_memory_bytes();
+  run.files = folder.files();
+  run.files.push_back("report.json");  // the list is in it
   write_report((std::filesystem::path(folder.path()) / "report.json").string(), run, loaded.scene, atlas,
                result.report, files, warnings);
+  stop_if_interrupted();
   folder.commit();
 
   if (!cmd.quiet)
-    for (const std::string& w : warnings) std::fprintf(stderr, "radbake: warning: %s\n", w.c_str());
+    for (const std::string& w : warnings) std::fprintf(stderr, "radbake: warning: %s\n", clipped(w, 600).c_str());
   char balance[64] = "energy balance not measured";
   if (result.report.balance.measured)
     std::snprintf(balance, sizeof balance, "energy balance %.3f%%", 100.0 * result.report.balance.relative_error);
@@ -172,7 +181,7 @@ void print_stats(const radbake::Atlas& atlas, const radbake::UvCommand& cmd, dou
   std::printf("  flipped triangles   %zu\n", s.flipped_triangles);
   std::printf("  padding violations  %zu (padding %d texels)\n", s.padding_violations, cmd.atlas.padding);
   if (cmd.evaluate_texcoord < 0) std::printf("  time                %.3f s\n", s.seconds);
-  for (const std::string& w : atlas.warnings) std::fprintf(stderr, "radbake: warning: %s\n", w.c_str());
+  for (const std::string& w : atlas.warnings) std::fprintf(stderr, "radbake: warning: %s\n", radbake::clipped(w, 600).c_str());
 }
 
 int run_uv(const radbake::UvCommand& cmd) {
@@ -184,7 +193,9 @@ int run_uv(const radbake::UvCommand& cmd) {
   if (cmd.evaluate_texcoord < 0) add_back_faces(loaded.scene);  // their charts are part of the cost
   std::vector<MeshView> views = mesh_views(loaded.scene);
   if (cmd.evaluate_texcoord < 0) {
-    print_stats(ensure_lightmap_uvs(views, cmd.atlas), cmd, load_seconds);
+    AtlasOptions options = cmd.atlas;
+    options.progress = [](const std::string&, double) { return !interrupted(); };
+    print_stats(ensure_lightmap_uvs(views, options), cmd, load_seconds);
     return 0;
   }
   std::vector<const Vec2*> uvs;
@@ -204,8 +215,7 @@ int run_uv(const radbake::UvCommand& cmd) {
 
 int main(int argc, char** argv) {
   using namespace radbake;
-  std::signal(SIGINT, on_interrupt);
-  std::signal(SIGTERM, on_interrupt);
+  watch_interrupts();
   try {
     CommandLine cl = parse_command_line(std::vector<std::string>(argv + 1, argv + argc));
     switch (cl.action) {
@@ -216,16 +226,16 @@ int main(int argc, char** argv) {
       case Action::Diff: return run_diff(cl.diff);
     }
   } catch (const UsageError& e) {
-    std::fprintf(stderr, "radbake: error: %s\n", e.what());
+    print_error(e);
     return 2;
   } catch (const InputError& e) {
-    std::fprintf(stderr, "radbake: error: %s\n", e.what());
+    print_error(e);
     return 2;
   } catch (const Cancelled&) {
     std::fprintf(stderr, "\nradbake: cancelled; nothing was written\n");
-    return 1;
+    return interrupted_exit_status();
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "radbake: error: %s\n", e.what());
+    print_error(e);
     return 1;
   }
   return 1;

@@ -86,18 +86,18 @@ class Resolver {
   std::string resolve(const std::string& uri, const std::string& pointer, FileAccess& access) {
     std::string decoded;
     if (has_scheme(uri))
-      refuse(file_, pointer, "URI '" + excerpt(uri) + "' is neither a relative file path nor a base64 data URI");
-    if (!percent_decode(uri, &decoded)) refuse(file_, pointer, "URI '" + excerpt(uri) + "' has a broken %-escape");
+      refuse(file_, pointer, "URI '" + clipped(uri) + "' is neither a relative file path nor a base64 data URI");
+    if (!percent_decode(uri, &decoded)) refuse(file_, pointer, "URI '" + clipped(uri) + "' has a broken %-escape");
     const fs::path relative(decoded);
     const fs::path lexical = (base_ / relative).lexically_normal();
     if (!allow_external_ && (relative.is_absolute() || !inside(lexical, base_)))
-      refuse(file_, pointer, "URI '" + excerpt(uri) + "' names a file outside the scene's folder "
+      refuse(file_, pointer, "URI '" + clipped(uri) + "' names a file outside the scene's folder "
                              "(--allow-external-files reads it)");
     std::error_code ec;
     fs::path found = fs::canonical(lexical, ec);
     if (ec || !fs::is_regular_file(found, ec)) return {};
     if (!allow_external_ && !inside(found, base_))
-      refuse(file_, pointer, "URI '" + excerpt(uri) + "' is a link to a file outside the scene's folder "
+      refuse(file_, pointer, "URI '" + clipped(uri) + "' is a link to a file outside the scene's folder "
                              "(--allow-external-files reads it)");
     access.by_uri.emplace(tinygltf_decoded(uri), found.string());
     access.allowed.insert(found.string());
@@ -225,15 +225,7 @@ bool load_image(tinygltf::Image* image, const int index, std::string*, std::stri
 }  // namespace
 
 void refuse(const std::string& file, const std::string& pointer, const std::string& what) {
-  throw InputError(file + ": " + pointer + ": " + what);
-}
-
-std::string excerpt(const std::string& text) {
-  constexpr size_t kLongest = 100;
-  std::string shown = text.size() > kLongest ? text.substr(0, kLongest) + "..." : text;
-  for (char& c : shown)
-    if (static_cast<unsigned char>(c) < 0x20) c = '?';
-  return shown;
+  throw InputError(clipped(file) + ": " + pointer + ": " + what);
 }
 
 FileAccess resolve_files(const json& doc, const std::string& file, const std::string& base_dir, bool allow_external) {
@@ -254,11 +246,11 @@ FileAccess resolve_files(const json& doc, const std::string& file, const std::st
       continue;
     }
     std::string found = resolver.resolve(uri, pointer, access);
-    if (found.empty()) refuse(file, pointer, "file '" + excerpt(uri) + "' not found beside the scene");
+    if (found.empty()) refuse(file, pointer, "file '" + clipped(uri) + "' not found beside the scene");
     std::error_code ec;
     size = fs::file_size(found, ec);
     if (ec || size != length)
-      refuse(file, pointer, "file '" + excerpt(uri) + "' holds " + std::to_string(size) + " bytes, byteLength says " +
+      refuse(file, pointer, "file '" + clipped(uri) + "' holds " + std::to_string(size) + " bytes, byteLength says " +
                                 std::to_string(length));
   }
   const json& images = doc.contains("images") ? doc["images"] : json::array();

@@ -27,12 +27,12 @@ const std::set<std::string> kSupportedRequired = {"KHR_lights_punctual", "KHR_ma
 std::string one_line(std::string text) {
   std::replace(text.begin(), text.end(), '\n', ' ');
   while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.pop_back();
-  return text;
+  return clipped(text, 300);
 }
 
 std::vector<uint8_t> read_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open file");
+  if (!in) throw InputError(clipped(path) + ": cannot open file");
   return std::vector<uint8_t>(std::istreambuf_iterator<char>(in), {});
 }
 
@@ -139,7 +139,7 @@ class SceneBuilder {
   void check_required_extensions() {
     for (const std::string& ext : model_.extensionsRequired)
       if (!kSupportedRequired.count(ext))
-        refuse(file_, "/extensionsRequired", "the file requires extension " + excerpt(ext) + ", which radbake does not support");
+        refuse(file_, "/extensionsRequired", "the file requires extension " + clipped(ext) + ", which radbake does not support");
   }
 
   std::vector<int> scene_roots() const {
@@ -191,7 +191,7 @@ class SceneBuilder {
 
   std::string describe_node(int index) const {
     const std::string& name = model_.nodes[size_t(index)].name;
-    return name.empty() ? std::to_string(index) : "'" + excerpt(name) + "'";
+    return name.empty() ? std::to_string(index) : "'" + clipped(name) + "'";
   }
 
   void add_mesh(int node_index, const Mat4& world) {
@@ -202,7 +202,7 @@ class SceneBuilder {
     for (size_t k = 0; k < mesh.primitives.size(); ++k) {
       const tinygltf::Primitive& prim = mesh.primitives[k];
       ++scene_.summary.primitives;
-      std::string where = "mesh '" + (mesh.name.empty() ? std::to_string(node.mesh) : excerpt(mesh.name)) + "' primitive " + std::to_string(k);
+      std::string where = "mesh '" + (mesh.name.empty() ? std::to_string(node.mesh) : clipped(mesh.name)) + "' primitive " + std::to_string(k);
       const std::string pointer = "/meshes/" + std::to_string(node.mesh) + "/primitives/" + std::to_string(k);
       int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
       if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN) {
@@ -213,7 +213,7 @@ class SceneBuilder {
       auto pos = prim.attributes.find("POSITION");
       if (pos == prim.attributes.end()) refuse(file_, pointer + "/attributes", "has no POSITION");
       MeshInstance inst;
-      inst.name = (node.name.empty() ? "node " + std::to_string(node_index) : excerpt(node.name)) + " / " + where;
+      inst.name = (node.name.empty() ? "node " + std::to_string(node_index) : clipped(node.name)) + " / " + where;
       inst.node = node_index;
       inst.mesh = node.mesh;
       inst.primitive = int(k);
@@ -311,7 +311,7 @@ class SceneBuilder {
   void add_light(int index, int node_index, const Mat4& world) {
     const tinygltf::Light& in = model_.lights[size_t(index)];
     Light light;
-    light.name = in.name.empty() ? "light " + std::to_string(index) : excerpt(in.name);
+    light.name = in.name.empty() ? "light " + std::to_string(index) : clipped(in.name);
     if (in.type == "point") light.type = LightType::Point;
     else if (in.type == "spot") light.type = LightType::Spot;
     else light.type = LightType::Directional;
@@ -357,7 +357,7 @@ class SceneBuilder {
     for (size_t i = 0; i < model_.images.size(); ++i) {
       const tinygltf::Image& in = model_.images[i];
       Image out;
-      out.name = in.name.empty() ? (in.uri.empty() ? "image " + std::to_string(i) : excerpt(in.uri)) : excerpt(in.name);
+      out.name = in.name.empty() ? (in.uri.empty() ? "image " + std::to_string(i) : clipped(in.uri)) : clipped(in.name);
       bool decoded = in.width > 0 && in.height > 0 && in.component == 4 && (in.bits == 8 || in.bits == 16) &&
                      in.image.size() == size_t(in.width) * size_t(in.height) * 4 * size_t(in.bits / 8);
       if (!decoded) {
@@ -432,8 +432,9 @@ class SceneBuilder {
 LoadedScene load_gltf(const std::string& path, const LoadOptions& options) {
   namespace fs = std::filesystem;
   std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) throw InputError(path + ": no such file");
-  if (fs::file_size(path, ec) > 0xffffffffu) throw InputError(path + ": file larger than 4 GiB");
+  if (!fs::is_regular_file(path, ec))
+    throw InputError(clipped(path) + (fs::exists(path, ec) ? ": not a regular file (a folder, pipe or device)" : ": no such file"));
+  if (fs::file_size(path, ec) > 0xffffffffu) throw InputError(clipped(path) + ": file larger than 4 GiB");
   auto src = std::make_shared<GltfSource>();
   src->path = path;
   src->base_dir = fs::path(path).parent_path().string();
@@ -475,7 +476,7 @@ LoadedScene load_gltf(const std::string& path, const LoadOptions& options) {
     err = "its parser failed";
   }
   if (!access.error.empty()) throw InputError(access.error);
-  if (!ok) throw InputError(path + ": not a glTF file radbake can read (tinygltf: '" + excerpt(one_line(err)) + "')");
+  if (!ok) throw InputError(clipped(path) + ": not a glTF file radbake can read (tinygltf: '" + clipped(one_line(err)) + "')");
   src->image_files = std::move(access.image_files);
 
   LoadedScene out;

@@ -28,8 +28,6 @@ struct GltfSource {
 // The one shape of every complaint about a file: "FILE: /json/pointer: what is wrong".
 [[noreturn]] void refuse(const std::string& file, const std::string& pointer, const std::string& what);
 
-// A string from the file (a name, a URI) cut short, so a hostile one cannot flood a message.
-std::string excerpt(const std::string& text);
 
 // Checks everything radbake and the writer read from the document (types, indices, ranges,
 // accessors against their bufferViews, bufferViews against their buffers, the node tree, numbers

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <tuple>
 
+#include "baker/errors.h"
 #include "io/gltf_source.h"
 
 namespace radbake {
@@ -178,7 +179,7 @@ class Writer {
       if (from.empty()) ec = std::make_error_code(std::errc::no_such_file_or_directory);
       else fs::copy_file(from, folder_ / file, fs::copy_options::overwrite_existing, ec);
       if (ec) {
-        out_.warnings.push_back("image '" + excerpt(uri) + "' could not be copied: " + ec.message());
+        out_.warnings.push_back("image '" + clipped(uri) + "' could not be copied: " + ec.message());
         continue;
       }
       images[i]["uri"] = file;

@@ -70,6 +70,7 @@ void write_report(const std::string& path, const RunInfo& run, const Scene& scen
       {"lightmaps", {{"quantity", lightmaps.quantity}, {"unit", lightmaps.unit},
                      {"png_intensity", lightmaps.png_scale}}},
       {"warnings", warnings},
+      {"files", run.files},
   };
   std::ofstream out(path);
   out << report.dump(2) << "\n";

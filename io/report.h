@@ -16,6 +16,7 @@ struct RunInfo {
   std::vector<StageTime> io_times;                           // loading, unwrapping, writing
   double total_seconds = 0;
   size_t peak_memory_bytes = 0;
+  std::vector<std::string> files;  // everything written into the output folder, relative to it
 };
 
 void write_report(const std::string& path, const RunInfo& run, const Scene& scene, const Atlas& atlas,

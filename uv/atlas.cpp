@@ -6,10 +6,26 @@
 #include <map>
 #include <stdexcept>
 
+#include "baker/errors.h"
 #include "uv/charts.h"
 
 namespace radbake {
+
+void UnwrapProgress::at(double fraction_of_step) {
+  fraction_ = fraction_of_step;
+  if (!callback_) return;
+  const auto now = std::chrono::steady_clock::now();
+  if (now - last_call_ < std::chrono::milliseconds(50)) return;
+  last_call_ = now;
+  if (!callback_("lightmap uvs", from_ + (to_ - from_) * std::min(fraction_of_step, 1.0))) throw Cancelled();
+}
+
 namespace {
+
+// Shares of the unwrap's progress: charts (grown and flattened), then packing, then measuring.
+constexpr double kChartsEnd = 0.6, kPackingEnd = 0.95;
+// Packing attempts: one, then a bracket and a bisection for the automatic density (below).
+constexpr int kMostPackings = 48;
 
 double world_area(const MeshView& mesh) {
   double area = 0;
@@ -92,19 +108,26 @@ AtlasMesh lay_out_charts(const MeshView& mesh, const std::vector<const Chart*>& 
 
 // Charts of every mesh that needs them, and the metres of seam between them.
 std::vector<Chart> make_charts(const std::vector<MeshView>& meshes, const std::vector<bool>& generate,
-                               const AtlasOptions& options, float density, double* seam_length) {
+                               const AtlasOptions& options, float density, double* seam_length,
+                               UnwrapProgress& progress) {
   ChartOptions chart_options;
   chart_options.max_normal_deviation_degrees = options.max_chart_normal_deviation;
   chart_options.hard_edge_degrees = options.hard_edge_angle;
   // Below about 4 x 4 texels a chart holds less than its padding costs.
   chart_options.small_chart_area = 16.0f / (density * density);
   std::vector<Chart> charts;
+  double triangles = 0, done = 0;
+  for (size_t m = 0; m < meshes.size(); ++m) triangles += generate[m] ? double(meshes[m].triangle_count) : 0;
   for (size_t m = 0; m < meshes.size(); ++m) {
     if (!generate[m]) continue;
+    const double from = kChartsEnd * done / triangles, mid = kChartsEnd * (done + 0.5 * double(meshes[m].triangle_count)) / triangles;
+    done += double(meshes[m].triangle_count);
+    progress.step(from, mid);
     HalfEdgeMesh hm = build_half_edge_mesh(meshes[m]);
     int count = 0;
-    std::vector<int> chart_of_face = grow_charts(hm, chart_options, &count);
-    std::vector<Chart> mine = flatten_charts(hm, chart_of_face, count, uint32_t(m), options.rotate_charts);
+    std::vector<int> chart_of_face = grow_charts(hm, chart_options, &count, progress);
+    progress.step(mid, kChartsEnd * done / triangles);
+    std::vector<Chart> mine = flatten_charts(hm, chart_of_face, count, uint32_t(m), options.rotate_charts, progress);
     // Seams: mesh edges whose two faces ended up in different charts.
     std::vector<int> final_chart(meshes[m].triangle_count, -1);
     for (size_t c = 0; c < mine.size(); ++c)
@@ -128,6 +151,7 @@ Atlas ensure_lightmap_uvs(const std::vector<MeshView>& meshes, const AtlasOption
   if (options.padding < 0 || options.padding > 64) throw std::invalid_argument("padding must be 0..64 texels");
   if (!(options.texel_density >= 0)) throw std::invalid_argument("texel density must be positive");
   const auto start = std::chrono::steady_clock::now();
+  UnwrapProgress progress(options.progress);
 
   Atlas atlas;
   atlas.meshes.resize(meshes.size());
@@ -154,9 +178,15 @@ Atlas ensure_lightmap_uvs(const std::vector<MeshView>& meshes, const AtlasOption
     atlas.warnings.push_back("mesh '" + meshes[m].name + "': " + problem + "; generating lightmap UVs");
   }
   double seam_length = 0;
-  std::vector<Chart> charts = make_charts(meshes, generate, options, density, &seam_length);
+  std::vector<Chart> charts = make_charts(meshes, generate, options, density, &seam_length, progress);
 
-  auto pack = [&](float d) { return pack_charts(charts, meshes.size(), d, page_size, options.padding, options.rotate_charts); };
+  int packings = 0;
+  auto pack = [&](float d) {
+    const double share = (kPackingEnd - kChartsEnd) / kMostPackings;
+    progress.step(kChartsEnd + share * packings, kChartsEnd + share * (packings + 1));
+    packings = std::min(packings + 1, kMostPackings - 1);
+    return pack_charts(charts, meshes.size(), d, page_size, options.padding, options.rotate_charts, progress);
+  };
   auto fits = [](const PackResult& r) { return r.pages.size() <= 1 && r.downscaled_meshes.empty(); };
   PackResult packed = pack(density);
   if (!charts.empty() && (options.texel_density <= 0 || (options.fit_one_page && !fits(packed)))) {
@@ -199,6 +229,7 @@ Atlas ensure_lightmap_uvs(const std::vector<MeshView>& meshes, const AtlasOption
   }
   uint32_t next_chart = 0;
   for (size_t m = 0; m < meshes.size(); ++m) {
+    progress.poll();
     if (own_page_side[m]) {
       atlas.pages.push_back({own_page_side[m], own_page_side[m]});
       atlas.meshes[m] = keep_own_uvs(meshes[m], int(atlas.pages.size() - 1), next_chart);
@@ -210,6 +241,7 @@ Atlas ensure_lightmap_uvs(const std::vector<MeshView>& meshes, const AtlasOption
     next_chart += uint32_t(charts_of[m].size());
   }
   atlas.chart_count = next_chart;
+  progress.step(kPackingEnd, 1);
   atlas.stats = measure_atlas(meshes, atlas, options.padding);
   atlas.stats.seam_length = seam_length;
   atlas.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "baker/math.h"
+#include "baker/progress.h"
 
 namespace radbake {
 
@@ -36,6 +37,10 @@ struct AtlasOptions {
   InputUvPolicy input_uvs = InputUvPolicy::KeepValid;
   float max_chart_normal_deviation = 50;  // degrees: a chart's faces stay within this cone
   float hard_edge_angle = 40;             // degrees: edges folding more are always seams
+  // Called with the stage "lightmap uvs" and the fraction done, at least every few tenths of a
+  // second of work; returning false stops the unwrap, which throws Cancelled (baker/errors.h), as
+  // a bake's callback stops a bake. A large mesh can take minutes to unwrap.
+  ProgressCallback progress = {};
 };
 
 struct AtlasPage {

@@ -321,17 +321,20 @@ Chart make_chart(const HalfEdgeMesh& hm, const LocalChart& c, uint32_t mesh_inde
 }  // namespace
 
 std::vector<Chart> flatten_charts(const HalfEdgeMesh& hm, const std::vector<int>& chart_of_face, int chart_count,
-                                  uint32_t mesh_index, bool may_rotate) {
+                                  uint32_t mesh_index, bool may_rotate, UnwrapProgress& progress) {
   std::vector<FaceList> pending{size_t(chart_count)};
   for (size_t f = 0; f < chart_of_face.size(); ++f)
     if (chart_of_face[f] >= 0) pending[size_t(chart_of_face[f])].push_back(int(f));
   const float cos_planar = std::cos(0.5f * 3.14159265f / 180.0f);
   std::vector<Chart> out;
+  size_t flattened = 0;  // faces, for progress: a chart split in two is counted again
   while (!pending.empty()) {
     FaceList faces = std::move(pending.back());
     pending.pop_back();
     if (faces.empty()) continue;
     for (FaceList& part : connected_parts(hm, faces)) {
+      progress.at(double(flattened) / double(chart_of_face.size()));
+      flattened += part.size();
       LocalChart c = gather(hm, part);
       bool planar = std::all_of(part.begin(), part.end(),
                                 [&](int f) { return dot(hm.face_normal[size_t(f)], c.normal) >= cos_planar; });

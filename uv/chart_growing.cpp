@@ -32,6 +32,7 @@ struct Grower {
   const HalfEdgeMesh& hm;
   float cos_cone, cos_hard, curved_area_cap;
   std::vector<Vec3> centroid;
+  UnwrapProgress& progress;
 
   struct State {
     int seed;
@@ -74,7 +75,8 @@ struct Grower {
       chart[size_t(s.seed)] = int(c);
       offer(int(c), s.seed);
     }
-    while (!frontier.empty()) {
+    for (size_t popped = 1; !frontier.empty(); ++popped) {
+      if (popped % 4096 == 0) progress.poll();
       auto [unused, f, c] = frontier.top();
       frontier.pop();
       if (chart[size_t(f)] >= 0 || !accepts(charts[size_t(c)], f)) continue;
@@ -119,7 +121,8 @@ struct Grower {
 
 }  // namespace
 
-std::vector<int> grow_charts(const HalfEdgeMesh& hm, const ChartOptions& options, int* chart_count) {
+std::vector<int> grow_charts(const HalfEdgeMesh& hm, const ChartOptions& options, int* chart_count,
+                             UnwrapProgress& progress) {
   const HalfEdgeTriMesh& mesh = hm.mesh;
   const int faces = int(mesh.n_faces());
   double total_area = 0;
@@ -127,7 +130,7 @@ std::vector<int> grow_charts(const HalfEdgeMesh& hm, const ChartOptions& options
   Grower grower{hm, std::cos(options.max_normal_deviation_degrees * kDegrees),
                 std::cos(options.hard_edge_degrees * kDegrees),
                 options.max_curved_chart_fraction > 0 ? float(total_area * options.max_curved_chart_fraction) : INFINITY,
-                std::vector<Vec3>(static_cast<size_t>(faces))};
+                std::vector<Vec3>(static_cast<size_t>(faces)), progress};
   for (int f = 0; f < faces; ++f) {
     Vec3 c{};
     for (auto v : mesh.fv_range(HalfEdgeTriMesh::FaceHandle(f))) c += to_vec3(mesh.point(v));
@@ -142,6 +145,7 @@ std::vector<int> grow_charts(const HalfEdgeMesh& hm, const ChartOptions& options
   std::vector<int> chart(static_cast<size_t>(faces), -1);
   grower.seed_leftovers(charts, chart, by_area);
   for (int iteration = 0; iteration < kRelaxations; ++iteration) {
+    progress.at(double(iteration + 1) / (kRelaxations + 1));
     grower.relocate(charts, chart);
     std::fill(chart.begin(), chart.end(), -1);
     grower.grow(charts, chart);

@@ -109,7 +109,7 @@ Vec2 placed_corner(const Chart& chart, const ChartPlacement& at, size_t corner) 
 }
 
 PackResult pack_charts(const std::vector<Chart>& charts, size_t mesh_count, float texel_density, int page_size,
-                       int padding, bool may_rotate) {
+                       int padding, bool may_rotate, UnwrapProgress& progress) {
   PackResult result;
   result.placements.assign(charts.size(), ChartPlacement{});
   std::vector<std::vector<size_t>> charts_of_mesh(mesh_count);
@@ -144,6 +144,7 @@ PackResult pack_charts(const std::vector<Chart>& charts, size_t mesh_count, floa
     Page trial = page;
     std::vector<ChartPlacement> placed(order.size());
     for (size_t k = 0; k < order.size(); ++k) {
+      progress.poll();
       const Chart& chart = charts[order[k]];
       const float scale = mesh_scale[chart.mesh];
       Spot best;

@@ -1,6 +1,7 @@
 // Internal to uv/: the stages between a mesh and a packed atlas.
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <vector>
 
@@ -9,6 +10,27 @@
 #include "uv/half_edge_mesh.h"
 
 namespace radbake {
+
+// AtlasOptions::progress for the steps below. Each step (a mesh's charts, a packing attempt)
+// spans part of the whole unwrap; at() reports the fraction of the step done, poll() only asks
+// whether to stop. Both throw Cancelled when the callback says so, and call it at most every 50 ms,
+// so they can sit in loops over faces.
+class UnwrapProgress {
+ public:
+  explicit UnwrapProgress(const ProgressCallback& callback) : callback_(callback) {}
+  void step(double from, double to) {
+    from_ = from;
+    to_ = to;
+    at(0);
+  }
+  void at(double fraction_of_step);
+  void poll() { at(fraction_); }
+
+ private:
+  const ProgressCallback& callback_;
+  double from_ = 0, to_ = 1, fraction_ = 0;
+  std::chrono::steady_clock::time_point last_call_{};
+};
 
 // A chart flattened into its own plane, before it is scaled to texels and packed.
 struct Chart {
@@ -31,13 +53,14 @@ struct ChartOptions {
 // chart's normals in a cone, with the seeds moved to their charts' middles a few times (Lloyd
 // relaxation, as xatlas does) so charts come out round; then tiny charts fold into a neighbour. Returns the
 // chart of each OpenMesh face (-1 for none) and sets chart_count.
-std::vector<int> grow_charts(const HalfEdgeMesh& mesh, const ChartOptions& options, int* chart_count);
+std::vector<int> grow_charts(const HalfEdgeMesh& mesh, const ChartOptions& options, int* chart_count,
+                             UnwrapProgress& progress);
 
 // Flattens each chart: planar ones by projection, curved ones by least-squares conformal maps
 // (Levy et al. 2002) solved with Eigen. A chart whose map flips or overlaps itself is split in two
 // until each piece maps cleanly.
 std::vector<Chart> flatten_charts(const HalfEdgeMesh& mesh, const std::vector<int>& chart_of_face, int chart_count,
-                                  uint32_t mesh_index, bool may_rotate);
+                                  uint32_t mesh_index, bool may_rotate, UnwrapProgress& progress);
 
 struct ChartPlacement {
   int page = -1;
@@ -55,7 +78,7 @@ struct PackResult {
 // Packs charts into pages of at most page_size texels, keeping all charts of one mesh on one page,
 // by Levy et al.'s "Tetris" packing of each chart's texel footprint against a horizon.
 PackResult pack_charts(const std::vector<Chart>& charts, size_t mesh_count, float texel_density, int page_size,
-                       int padding, bool may_rotate);
+                       int padding, bool may_rotate, UnwrapProgress& progress);
 
 // Where corner k of chart triangle i lands in the page, in texels.
 Vec2 placed_corner(const Chart& chart, const ChartPlacement& at, size_t corner);

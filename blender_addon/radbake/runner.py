@@ -12,8 +12,8 @@ import bpy
 from . import compat
 
 # radbake's stages in order, for one overall fraction from its per-stage progress lines.
-STAGES = ["elements", "sample placement", "punctual lights", "area lights", "form factors", "radiosity",
-          "final gather"]
+STAGES = ["lightmap uvs", "elements", "sample placement", "punctual lights", "area lights", "form factors",
+          "radiosity", "final gather"]
 PROGRESS = re.compile(r"^radbake: (.+) (\d+)%$")
 # Blender's exporter turns lights into candela with 683 lm/W but leaves emission strength as it
 # is: scaling emission by the same 683 keeps emitting surfaces as bright next to lamps as Cycles
