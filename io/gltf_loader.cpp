@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "baker/errors.h"
+#include "io/gltf_schema.h"
 #include "io/gltf_source.h"
 
 namespace radbake {
@@ -399,7 +400,8 @@ LoadedScene load_gltf(const std::string& path) {
   auto src = std::make_shared<GltfSource>();
   src->path = path;
   src->base_dir = fs::path(path).parent_path().string();
-  std::vector<uint8_t> bytes = read_file(path);
+  LoadedScene out;
+  std::vector<uint8_t> bytes = enforce_gltf_schema(path, read_file(path), out.scene.warnings);
   src->binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
   if (bytes.size() > 0xffffffffu) throw InputError(path + ": file larger than 4 GiB");
 
@@ -413,7 +415,6 @@ LoadedScene load_gltf(const std::string& path) {
   if (src->binary) split_glb(bytes, *src);
   else src->json_text.assign(bytes.begin(), bytes.end());
 
-  LoadedScene out;
   if (!warn.empty()) out.scene.warnings.push_back(one_line(warn));
   SceneBuilder(src->model, out.scene).build();
   out.source = std::move(src);
