@@ -115,7 +115,7 @@ class SchemaCheck {
       common(s, at, Owner::Other);
     });
     drop_invalid_elements("animations", [&](json& a, const std::string& at) { animation(a, at); });
-    index(doc_, "scene", "", count("scenes"), "scenes");
+    index(doc_, "scene", "", count("scenes"), "/scenes");
     common(doc_, "", Owner::Document);
     declarations();
     return changed_;
@@ -770,7 +770,7 @@ std::vector<uint8_t> enforce_gltf_schema(const std::string& file, std::vector<ui
   try {
     if (!SchemaCheck(doc, warnings).run()) return bytes;
   } catch (const Violation& v) {
-    throw InputError(file + ": " + v.pointer + ": " + v.what);
+    throw InputError(file + ": " + (v.pointer.empty() ? "/" : v.pointer) + ": " + v.what);
   }
   std::string text = doc.dump();
   if (!glb) return std::vector<uint8_t>(text.begin(), text.end());
