@@ -7,6 +7,7 @@
 #include <set>
 
 #include "baker/errors.h"
+#include "io/gltf_schema.h"
 #include "io/gltf_source.h"
 
 namespace radbake {
@@ -438,11 +439,20 @@ LoadedScene load_gltf(const std::string& path, const LoadOptions& options) {
   auto src = std::make_shared<GltfSource>();
   src->path = path;
   src->base_dir = fs::path(path).parent_path().string();
+  LoadedScene out;
+  auto take = [&](const std::vector<uint8_t>& bytes) {
+    src->binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+    src->json_text.clear();
+    src->glb_bin.clear();
+    if (src->binary) split_glb(bytes, path, *src);
+    else src->json_text.assign(bytes.begin(), bytes.end());
+  };
   std::vector<uint8_t> bytes = read_file(path);
-  src->binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
-  if (src->binary) split_glb(bytes, path, *src);
-  else src->json_text.assign(bytes.begin(), bytes.end());
+  take(bytes);
+  // Counted before any parser recurses into it; the schema check may then rewrite the document.
   check_nesting(src->json_text, path);
+  bytes = enforce_gltf_schema(path, std::move(bytes), out.scene.warnings);
+  take(bytes);
 
   ResourceEstimate estimate;
   FileAccess access;
@@ -451,7 +461,9 @@ LoadedScene load_gltf(const std::string& path, const LoadOptions& options) {
     try {
       doc = nlohmann::json::parse(src->json_text);
     } catch (const nlohmann::json::parse_error& e) {
-      throw InputError(path + ": not valid JSON (syntax error at byte " + std::to_string(e.byte) + ")");
+      throw InputError(clipped(path) + ": not valid JSON (syntax error at byte " + std::to_string(e.byte) + ")");
+    } catch (const nlohmann::json::out_of_range&) {
+      throw InputError(clipped(path) + ": not valid JSON (a number too large for a double, such as 1e999)");
     }
     estimate = check_document(doc, path, src->binary ? src->glb_bin.size() : SIZE_MAX);
     // The file is held as read, as JSON text and as tinygltf's model while loading.
@@ -479,7 +491,6 @@ LoadedScene load_gltf(const std::string& path, const LoadOptions& options) {
   if (!ok) throw InputError(clipped(path) + ": not a glTF file radbake can read (tinygltf: '" + clipped(one_line(err)) + "')");
   src->image_files = std::move(access.image_files);
 
-  LoadedScene out;
   if (!warn.empty()) out.scene.warnings.push_back(one_line(warn));
   SceneBuilder(src->model, out.scene, path).build();
   out.source = std::move(src);

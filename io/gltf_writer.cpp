@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -27,6 +28,36 @@ void write_bytes(const fs::path& path, const uint8_t* data, size_t size) {
 
 bool is_data_uri(const std::string& uri) { return uri.rfind("data:", 0) == 0; }
 
+double component(const uint8_t* p, int component_type) {
+  switch (component_type) {
+    case TINYGLTF_COMPONENT_TYPE_BYTE: { int8_t v; std::memcpy(&v, p, 1); return v; }
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return *p;
+    case TINYGLTF_COMPONENT_TYPE_SHORT: { int16_t v; std::memcpy(&v, p, 2); return v; }
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: { uint16_t v; std::memcpy(&v, p, 2); return v; }
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: { uint32_t v; std::memcpy(&v, p, 4); return v; }
+    default: { float v; std::memcpy(&v, p, 4); return v; }
+  }
+}
+
+void add_bounds(json& accessor, const std::vector<uint8_t>& bytes, size_t count, int component_type) {
+  const size_t cs = component_size(component_type);
+  const size_t n = bytes.size() / count / cs;
+  std::vector<double> lo(n, INFINITY), hi(n, -INFINITY);
+  for (size_t i = 0; i < count; ++i)
+    for (size_t c = 0; c < n; ++c) {
+      double v = component(&bytes[(i * n + c) * cs], component_type);
+      lo[c] = std::min(lo[c], v);
+      hi[c] = std::max(hi[c], v);
+    }
+  // Floats are written as the float values themselves, so validators compare like with like.
+  accessor["min"] = json::array();
+  accessor["max"] = json::array();
+  for (size_t c = 0; c < n; ++c) {
+    accessor["min"].push_back(component_type == TINYGLTF_COMPONENT_TYPE_FLOAT ? json(float(lo[c])) : json(lo[c]));
+    accessor["max"].push_back(component_type == TINYGLTF_COMPONENT_TYPE_FLOAT ? json(float(hi[c])) : json(hi[c]));
+  }
+}
+
 // Appends accessors and their buffer views over one new binary buffer.
 class BinaryWriter {
  public:
@@ -52,36 +83,6 @@ class BinaryWriter {
   const std::vector<uint8_t>& data() const { return data_; }
 
  private:
-  static double component(const uint8_t* p, int component_type) {
-    switch (component_type) {
-      case TINYGLTF_COMPONENT_TYPE_BYTE: { int8_t v; std::memcpy(&v, p, 1); return v; }
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return *p;
-      case TINYGLTF_COMPONENT_TYPE_SHORT: { int16_t v; std::memcpy(&v, p, 2); return v; }
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: { uint16_t v; std::memcpy(&v, p, 2); return v; }
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: { uint32_t v; std::memcpy(&v, p, 4); return v; }
-      default: { float v; std::memcpy(&v, p, 4); return v; }
-    }
-  }
-
-  static void add_bounds(json& accessor, const std::vector<uint8_t>& bytes, size_t count, int component_type) {
-    const size_t cs = component_size(component_type);
-    const size_t n = bytes.size() / count / cs;
-    std::vector<double> lo(n, INFINITY), hi(n, -INFINITY);
-    for (size_t i = 0; i < count; ++i)
-      for (size_t c = 0; c < n; ++c) {
-        double v = component(&bytes[(i * n + c) * cs], component_type);
-        lo[c] = std::min(lo[c], v);
-        hi[c] = std::max(hi[c], v);
-      }
-    // Floats are written as the float values themselves, so validators compare like with like.
-    accessor["min"] = json::array();
-    accessor["max"] = json::array();
-    for (size_t c = 0; c < n; ++c) {
-      accessor["min"].push_back(component_type == TINYGLTF_COMPONENT_TYPE_FLOAT ? json(float(lo[c])) : json(lo[c]));
-      accessor["max"].push_back(component_type == TINYGLTF_COMPONENT_TYPE_FLOAT ? json(float(hi[c])) : json(hi[c]));
-    }
-  }
-
   json& doc_;
   int buffer_;
   std::vector<uint8_t> data_;
@@ -123,6 +124,7 @@ class Writer {
     original_meshes_ = doc_["meshes"];
     original_materials_ = doc_["materials"];
     relocate_buffers();
+    correct_bounds();
     copy_images();
     const int lightmap_buffer = int(doc_["buffers"].size());
     BinaryWriter bin(doc_, lightmap_buffer);
@@ -164,6 +166,54 @@ class Writer {
       buffer["uri"] = file;
       out_.written_files.push_back(file);
     }
+  }
+
+  // POSITION accessors must have bounds (glTF 2.0 section 3.7.2.1), and bounds must match the
+  // data (the validator's ACCESSOR_MIN_MISMATCH); the input's are copied, so they are checked here.
+  bool needs_bounds(size_t accessor) const {
+    const json& a = doc_["accessors"][accessor];
+    return a.contains("min") || a.contains("max") || position_accessors_.count(accessor);
+  }
+
+  void correct_bounds() {
+    for (const json& mesh : original_meshes_)
+      for (const json& prim : mesh["primitives"]) {
+        if (prim["attributes"].contains("POSITION")) position_accessors_.insert(prim["attributes"]["POSITION"].get<size_t>());
+        for (const json& target : prim.value("targets", json::array()))
+          if (target.contains("POSITION")) position_accessors_.insert(target["POSITION"].get<size_t>());
+      }
+    for (size_t i = 0; i < src_.model.accessors.size(); ++i) {
+      json& a = doc_["accessors"][i];
+      if (!needs_bounds(i) || a["count"].get<size_t>() == 0) continue;
+      size_t element_size;
+      std::vector<uint8_t> bytes;
+      try {
+        bytes = accessor_bytes(src_.model, int(i), &element_size);
+      } catch (const InputError&) {
+        continue;  // an accessor no primitive reads may point anywhere; nothing to measure
+      }
+      json measured = json::object();
+      add_bounds(measured, bytes, a["count"].get<size_t>(), a["componentType"].get<int>());
+      if (a.contains("min") && a.contains("max") && same_bounds(a, measured)) continue;
+      if (a.contains("min") || a.contains("max"))
+        out_.warnings.push_back("/accessors/" + std::to_string(i) + ": min and max did not match the data; written as measured");
+      a["min"] = measured["min"];
+      a["max"] = measured["max"];
+    }
+  }
+
+  // Compared as the validator does, in the precision of the components.
+  static bool same_bounds(const json& declared, const json& measured) {
+    const bool floats = declared["componentType"] == TINYGLTF_COMPONENT_TYPE_FLOAT;
+    auto as_float = [](double v) {  // beyond float's range the cast is undefined; the validator reads infinity
+      return std::fabs(v) > FLT_MAX ? std::copysign(INFINITY, v) : double(float(v));
+    };
+    for (const char* key : {"min", "max"})
+      for (size_t c = 0; c < measured[key].size(); ++c) {
+        const double d = declared[key][c].get<double>(), m = measured[key][c].get<double>();
+        if (floats ? as_float(d) != as_float(m) : d != m) return false;
+      }
+    return true;
   }
 
   // Only the files the loader resolved (inside the scene's folder, unless external files were
@@ -261,9 +311,8 @@ class Writer {
     const json& a = doc_["accessors"][size_t(accessor_index)];
     if (back && semantic == "NORMAL") negate(out, element_size, a["componentType"].get<int>(), 0, 3);
     if (back && semantic == "TANGENT") negate(out, element_size, a["componentType"].get<int>(), 3, 1);
-    bool bounded = a.contains("min") && a.contains("max");
     return bin.add(out, source_vertex.size(), a["type"].get<std::string>().c_str(), a["componentType"].get<int>(),
-                   a.value("normalized", false), kArrayBuffer, bounded);
+                   a.value("normalized", false), kArrayBuffer, needs_bounds(size_t(accessor_index)));
   }
 
   void rewrite_primitive(size_t i, BinaryWriter& bin) {
@@ -378,6 +427,7 @@ class Writer {
   json doc_, original_meshes_, original_materials_;
   std::map<int, int> mesh_of_node_;
   std::set<int> meshes_taken_;
+  std::set<size_t> position_accessors_;
   std::map<std::tuple<int, int, int, bool>, int> material_clones_;
   std::vector<uint8_t> has_back_;  // per instance: some of its triangles have back-face twins
   std::vector<int> page_texture_;

@@ -1,0 +1,510 @@
+#!/usr/bin/env python3
+"""Regenerates the hostile-input corpus: python3 tests/fuzz/make_corpus.py
+
+Seeded mutations of our own fixtures and samples (tests/fixtures, samples), written to
+tests/fuzz/corpus/. The same script always writes the same files: every random choice comes from a
+generator seeded with the source's name and the mutant's number. Each file is named
+SOURCE.MUTATION.N.gltf (or .glb), the mutation saying what was done, e.g.
+cornell_box.type_swap.3.gltf, and its asset.extras.mutation (where the mutant still has an asset)
+says where.
+
+Two kinds of mutants:
+- targeted: a catalogue of hostile edits (out-of-range indices, bad URIs, strides, nested nodes,
+  truncated buffers, extensions...) applied where the source has what they edit;
+- random: type swaps, deletions, numbers pushed to extremes and duplications at random JSON paths.
+
+Files the fuzzer found live in tests/fuzz/findings/ and are never touched here.
+"""
+import base64
+import copy
+import json
+import os
+import random
+import struct
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
+OUT = os.path.join(HERE, "corpus")
+SEED = 11  # issue 11
+
+SOURCES = [
+    "samples/cornell_box/cornell_box.gltf",
+    "samples/ferren/ferren.gltf",
+    "tests/fixtures/external_buffer.gltf",
+    "tests/fixtures/instanced_mesh.gltf",
+    "tests/fixtures/lit_room.glb",
+    "tests/fixtures/own_lightmap_uvs.gltf",
+    "tests/fixtures/primitive_kinds.gltf",
+    "tests/fixtures/red_textured_floor.gltf",
+    "tests/fixtures/uv/non_manifold_edges.gltf",
+]
+RANDOM_PER_SOURCE = 8
+
+# Values of every JSON type, and numbers at the edges of what parsers and float arithmetic take.
+SWAPS = ["text", "", 1.5, -1, 0, 2147483648, {}, [], [1, 2], {"a": 1}, True, False, None]
+EXTREMES = [1e308, -1e308, 1e39, -1e39, 1e-320, -0.0, 3.5, -1, 0, 4294967296, 9007199254740993,
+            18446744073709551616, -2147483649, 1e20]
+INDEX_NAMES = {"mesh", "material", "indices", "bufferView", "buffer", "source", "sampler", "index",
+               "node", "skin", "camera", "scene", "light", "input", "output", "inverseBindMatrices"}
+BAD_URIS = ["../../../../etc/passwd", "/etc/passwd", "file:///etc/passwd", "missing.bin", "",
+            "http://example.com/buffer.bin", "data:application/octet-stream;base64,!!!not base64!!!",
+            "data:application/octet-stream;base64,AAAA", "data:;base64,", "%2e%2e/%2e%2e/etc/passwd",
+            "a" * 5000 + ".bin", "truncated.bin", "nul\u0000byte.bin", ".", "corpus"]
+
+
+# --- reading and writing sources -----------------------------------------------------------------
+
+def read_source(relative):
+    """The source's JSON document, and the .glb's BIN chunk (None for .gltf)."""
+    data = open(os.path.join(ROOT, relative), "rb").read()
+    if relative.endswith(".glb"):
+        length, _ = struct.unpack_from("<II", data, 12)
+        doc = json.loads(data[20:20 + length])
+        bin_at = 20 + ((length + 3) & ~3)
+        bin_length, _ = struct.unpack_from("<II", data, bin_at)
+        return doc, data[bin_at + 8:bin_at + 8 + bin_length]
+    return json.loads(data), None
+
+
+def glb_bytes(doc_text, bin_chunk):
+    doc_bytes = doc_text.encode()
+    doc_bytes += b" " * (-len(doc_bytes) % 4)
+    chunks = struct.pack("<II", len(doc_bytes), 0x4E4F534A) + doc_bytes
+    if bin_chunk is not None:
+        padded = bin_chunk + b"\0" * (-len(bin_chunk) % 4)
+        chunks += struct.pack("<II", len(padded), 0x004E4942) + padded
+    return struct.pack("<III", 0x46546C67, 2, 12 + len(chunks)) + chunks
+
+
+def dump(doc):
+    return json.dumps(doc, separators=(",", ":"), allow_nan=True)
+
+
+# --- JSON paths --------------------------------------------------------------------------------
+
+def paths(value, prefix=()):
+    """Every (path, value) under `value`, data URIs' insides excluded."""
+    out = []
+    items = value.items() if isinstance(value, dict) else enumerate(value) if isinstance(value, list) else []
+    for key, child in items:
+        out.append((prefix + (key,), child))
+        out.extend(paths(child, prefix + (key,)))
+    return out
+
+
+def get(doc, path):
+    for key in path:
+        doc = doc[key]
+    return doc
+
+
+def put(doc, path, value):
+    get(doc, path[:-1])[path[-1]] = value
+
+
+def pointer(path):
+    return "/" + "/".join(str(k) for k in path)
+
+
+# --- targeted mutations: each returns a description, or None when the source lacks what it edits --
+
+def first(doc, collection):
+    return doc.get(collection) or []
+
+
+def mutate_index(rng, doc):
+    found = [(p, v) for p, v in paths(doc) if isinstance(v, int) and not isinstance(v, bool) and
+             (p[-1] in INDEX_NAMES or (len(p) > 1 and p[-2] in ("children", "nodes", "attributes", "joints")))]
+    if not found:
+        return None
+    path, value = rng.choice(found)
+    bad = rng.choice([-1, -2147483648, 2147483647, 4294967295, value + 1000, 65536, 1.5])
+    put(doc, path, bad)
+    return f"{pointer(path)}: {value} -> {bad}"
+
+
+def truncate_buffer(rng, doc, bin_chunk):
+    buffers = first(doc, "buffers")
+    if not buffers:
+        return None, bin_chunk
+    b = rng.randrange(len(buffers))
+    buffer = buffers[b]
+    uri = buffer.get("uri", "")
+    how = rng.choice(["shorter", "longer", "zero", "uri"])
+    if how == "uri" or (how == "shorter" and not uri.startswith("data:") and bin_chunk is None):
+        buffer["uri"] = "truncated.bin"
+        return f"/buffers/{b}/uri -> truncated.bin", bin_chunk
+    if how == "longer":
+        buffer["byteLength"] = buffer.get("byteLength", 0) * 2 + 4
+        return f"/buffers/{b}/byteLength doubled", bin_chunk
+    if how == "zero":
+        buffer["byteLength"] = 0
+        return f"/buffers/{b}/byteLength -> 0", bin_chunk
+    if uri.startswith("data:"):
+        head, data = uri.split(",", 1)
+        raw = base64.b64decode(data)
+        buffer["uri"] = head + "," + base64.b64encode(raw[:len(raw) // 2]).decode()
+        return f"/buffers/{b}/uri: data cut to half", bin_chunk
+    return f"BIN chunk cut to half", bin_chunk[:len(bin_chunk) // 2]
+
+
+def bad_uri(rng, doc):
+    owners = [(c, i) for c in ("buffers", "images") for i, o in enumerate(first(doc, c)) if "uri" in o]
+    if not owners:
+        return None
+    collection, i = rng.choice(owners)
+    uri = rng.choice(BAD_URIS)
+    doc[collection][i]["uri"] = uri
+    return f"/{collection}/{i}/uri -> {uri[:40]!r}"
+
+
+def bad_accessor(rng, doc):
+    accessors = first(doc, "accessors")
+    if not accessors:
+        return None
+    a = rng.randrange(len(accessors))
+    acc = accessors[a]
+    key, value = rng.choice([
+        ("componentType", 5124), ("componentType", 0), ("componentType", 5130), ("type", "VEC5"), ("type", "MAT4"),
+        ("type", "SCALAR"), ("count", 0), ("count", 2 ** 31), ("count", 2 ** 53), ("count", acc.get("count", 1) + 1),
+        ("byteOffset", 1), ("byteOffset", 2 ** 40), ("byteOffset", 3), ("normalized", True), ("bufferView", None),
+        ("min", [0]), ("max", ["x", 1, 2]), ("min", [1e39, 1e39, 1e39]),
+        ("sparse", {"count": 2, "indices": {"bufferView": 0, "componentType": 5123},
+                    "values": {"bufferView": 0}}),
+        ("sparse", {"count": 2 ** 30, "indices": {"bufferView": 0, "componentType": 5125},
+                    "values": {"bufferView": 0, "byteOffset": 2 ** 31}}),
+        ("sparse", {"count": 1})])
+    if value is None:
+        acc.pop(key, None)
+    else:
+        acc[key] = value
+    return f"/accessors/{a}/{key} -> {json.dumps(value)[:40]}"
+
+
+def bad_buffer_view(rng, doc):
+    views = first(doc, "bufferViews")
+    if not views:
+        return None
+    v = rng.randrange(len(views))
+    key, value = rng.choice([
+        ("byteStride", 0), ("byteStride", 3), ("byteStride", 1), ("byteStride", 256), ("byteStride", 2 ** 31),
+        ("byteStride", 4), ("byteLength", 0), ("byteLength", 2 ** 32), ("byteLength", 1), ("byteOffset", 2 ** 32),
+        ("byteOffset", 1), ("target", 1234), ("target", 34963), ("buffer", 7)])
+    views[v][key] = value
+    return f"/bufferViews/{v}/{key} -> {value}"
+
+
+def nested_nodes(rng, doc):
+    nodes = doc.setdefault("nodes", [])
+    if not nodes:
+        return None
+    n = len(nodes)
+    how = rng.choice(["self", "cycle", "two_parents", "deep", "bomb", "scene_twice", "child_and_root"])
+    mesh = next((i for i, node in enumerate(nodes) if "mesh" in node), 0)
+    if how == "self":
+        nodes[0].setdefault("children", []).append(0)
+    elif how == "cycle":
+        nodes.append({"children": [n + 1]})
+        nodes.append({"children": [n]})
+        doc["scenes"][0]["nodes"].append(n)
+    elif how == "two_parents":
+        nodes.append({"children": [mesh]})
+        nodes.append({"children": [mesh]})
+        doc["scenes"][0]["nodes"] += [n, n + 1]
+    elif how == "deep":
+        depth = 3000
+        for k in range(depth):
+            nodes.append({"children": [n + k + 1]} if k + 1 < depth else {"mesh": nodes[mesh].get("mesh", 0)})
+        doc["scenes"][0]["nodes"].append(n)
+    elif how == "bomb":  # a DAG whose every level doubles the instances: 2^40 copies of a mesh
+        for k in range(40):
+            nodes.append({"children": [n + k + 1, n + k + 1]})
+        nodes.append({"mesh": nodes[mesh].get("mesh", 0)})
+        doc["scenes"][0]["nodes"].append(n)
+    elif how == "scene_twice":
+        doc["scenes"][0]["nodes"].append(doc["scenes"][0]["nodes"][0])
+    else:
+        nodes.append({"children": [doc["scenes"][0]["nodes"][0]]})
+        doc["scenes"][0]["nodes"].append(n)
+    return f"nodes: {how}"
+
+
+def bad_extension(rng, doc):
+    how = rng.choice(["required_unknown", "used_not_array", "value_not_object", "undeclared", "light_type",
+                      "light_negative", "spot_reversed", "light_missing", "transform_junk", "strength_string",
+                      "extensions_array", "unknown_kept", "khr_on_wrong_object", "used_duplicate",
+                      "required_not_used", "clearcoat_junk"])
+    materials = first(doc, "materials")
+    lights = doc.get("extensions", {}).get("KHR_lights_punctual", {}).get("lights", [])
+    if how == "required_unknown":
+        doc["extensionsRequired"] = ["EXT_made_up"]
+        doc.setdefault("extensionsUsed", []).append("EXT_made_up")
+    elif how == "used_not_array":
+        doc["extensionsUsed"] = "KHR_lights_punctual"
+    elif how == "value_not_object" and materials:
+        materials[0].setdefault("extensions", {})["EXT_vendor_thing"] = 5
+        doc.setdefault("extensionsUsed", []).append("EXT_vendor_thing")
+    elif how == "undeclared" and materials:
+        materials[0].setdefault("extensions", {})["EXT_vendor_thing"] = {"level": 3}
+    elif how == "light_type" and lights:
+        lights[0]["type"] = "laser"
+    elif how == "light_negative" and lights:
+        lights[0]["intensity"] = -5
+    elif how == "spot_reversed" and lights:
+        lights[0].update({"type": "spot", "spot": {"innerConeAngle": 1.2, "outerConeAngle": 0.3}})
+    elif how == "light_missing":
+        doc.get("extensions", {}).pop("KHR_lights_punctual", None)
+    elif how == "transform_junk" and materials:
+        pbr = materials[0].setdefault("pbrMetallicRoughness", {})
+        pbr["baseColorTexture"] = {"index": 0, "extensions": {"KHR_texture_transform": {"offset": "far", "scale": [1]}}}
+        doc.setdefault("extensionsUsed", []).append("KHR_texture_transform")
+    elif how == "strength_string" and materials:
+        materials[-1].setdefault("extensions", {})["KHR_materials_emissive_strength"] = {"emissiveStrength": "bright"}
+    elif how == "extensions_array" and materials:
+        materials[0]["extensions"] = ["KHR_materials_emissive_strength"]
+    elif how == "unknown_kept" and materials:
+        materials[0].setdefault("extensions", {})["EXT_vendor_thing"] = {"level": 3, "deep": {"a": [1, {"b": None}]}}
+        doc.setdefault("extensionsUsed", []).append("EXT_vendor_thing")
+    elif how == "khr_on_wrong_object" and materials:
+        materials[0].setdefault("extensions", {})["KHR_lights_punctual"] = {"light": 0}
+    elif how == "used_duplicate":
+        doc["extensionsUsed"] = doc.get("extensionsUsed", []) * 2 + ["KHR_materials_emissive_strength"]
+    elif how == "required_not_used":
+        doc["extensionsRequired"] = ["KHR_texture_transform"]
+    elif how == "clearcoat_junk" and materials:
+        materials[0].setdefault("extensions", {})["KHR_materials_clearcoat"] = {"clearcoatFactor": "max",
+                                                                             "clearcoatTexture": {}}
+        doc.setdefault("extensionsUsed", []).append("KHR_materials_clearcoat")
+    else:
+        return None
+    return f"extensions: {how}"
+
+
+def bad_material(rng, doc):
+    materials = first(doc, "materials")
+    if not materials:
+        return None
+    m = rng.randrange(len(materials))
+    mat = materials[m]
+    key, value = rng.choice([
+        ("normalTexture", {"scale": 1}), ("occlusionTexture", {"index": 0, "strength": 2}), ("normalTexture", 3),
+        ("emissiveTexture", {"index": 0, "texCoord": 7}), ("emissiveTexture", {"texCoord": 1}),
+        ("alphaMode", "SOMETIMES"), ("alphaMode", "MASK"), ("alphaCutoff", -1), ("alphaCutoff", "half"),
+        ("doubleSided", "yes"), ("emissiveFactor", [1e30, 1e30, 1e30]), ("emissiveFactor", [1, 1]),
+        ("pbrMetallicRoughness", {"baseColorFactor": [1, 1, 1]}), ("pbrMetallicRoughness", "red"),
+        ("pbrMetallicRoughness", {"metallicFactor": 2, "roughnessFactor": -1}),
+        ("pbrMetallicRoughness", {"baseColorTexture": {"index": 0}}), ("name", 12), ("extras", [1, 2, 3])])
+    mat[key] = value
+    return f"/materials/{m}/{key} -> {json.dumps(value)[:40]}"
+
+
+def bad_mesh(rng, doc):
+    meshes = first(doc, "meshes")
+    if not meshes:
+        return None
+    m = rng.randrange(len(meshes))
+    prim = meshes[m]["primitives"][0]
+    attributes = prim.setdefault("attributes", {})
+    position = attributes.get("POSITION", 0)
+    key, value = rng.choice([
+        ("mode", 7), ("mode", 0), ("mode", 1), ("mode", -1), ("attributes", {}), ("attributes", []),
+        ("POSITION", None), ("TEXCOORD_1", position), ("TEXCOORD_5", position), ("NORMAL", position),
+        ("TANGENT", position), ("COLOR_0", position), ("JOINTS_0", position), ("_CUSTOM", position),
+        ("targets", [{"POSITION": position}]), ("targets", [{"POSITION": "x"}]), ("targets", {}),
+        ("primitives", []), ("indices", position), ("weights", [0.5])])
+    if key in ("mode", "attributes", "targets", "indices"):
+        prim[key] = value
+    elif key in ("primitives", "weights"):
+        meshes[m][key] = value
+    elif value is None:
+        attributes.pop(key, None)
+    else:
+        attributes[key] = value
+    return f"/meshes/{m}: {key} -> {json.dumps(value)[:40]}"
+
+
+def bad_texture(rng, doc):
+    if not first(doc, "textures"):
+        return None
+    how = rng.choice(["source_missing", "sampler_junk", "image_both", "image_neither", "image_garbage",
+                      "mime", "wrap"])
+    tex, image = doc["textures"][0], doc["images"][0] if first(doc, "images") else {}
+    if how == "source_missing":
+        tex["source"] = 9
+    elif how == "sampler_junk":
+        doc.setdefault("samplers", []).append({"magFilter": 1, "minFilter": "linear", "wrapS": 0})
+        tex["sampler"] = len(doc["samplers"]) - 1
+    elif how == "image_both":
+        image["bufferView"] = 0
+    elif how == "image_neither":
+        image.pop("uri", None)
+    elif how == "image_garbage":
+        image["uri"] = "data:image/png;base64," + base64.b64encode(b"\x89PNG\r\n\x1a\n" + bytes(64)).decode()
+    elif how == "mime":
+        image["mimeType"] = "image/gif"
+    else:
+        doc.setdefault("samplers", []).append({"wrapS": 12345, "wrapT": -1})
+        tex["sampler"] = len(doc["samplers"]) - 1
+    return f"textures: {how}"
+
+
+def bad_structure(rng, doc):
+    how = rng.choice(["asset_missing", "version_3", "version_number", "collection_object", "empty_arrays",
+                      "scene_missing", "cameras", "skin", "animation", "long_name"])
+    if how == "asset_missing":
+        doc.pop("asset", None)
+    elif how == "version_3":
+        doc["asset"]["version"] = "3.0"
+    elif how == "version_number":
+        doc["asset"]["version"] = 2.0
+    elif how == "collection_object":
+        key = rng.choice(["nodes", "meshes", "accessors", "materials", "scenes", "buffers", "bufferViews"])
+        doc[key] = {"0": doc.get(key, [{}])[0]}
+        how += " " + key
+    elif how == "empty_arrays":
+        for key in ("cameras", "skins", "animations", "samplers"):
+            doc[key] = []
+    elif how == "scene_missing":
+        doc["scene"] = 3
+    elif how == "cameras":
+        doc["cameras"] = [{"type": "perspective", "perspective": {"yfov": -1, "znear": "near"}},
+                          {"type": "fisheye"}, {"type": "orthographic"}]
+        doc["nodes"][0]["camera"] = rng.choice([0, 1, 2, 5])
+    elif how == "skin":
+        doc["skins"] = [{"joints": [999]}, {"joints": "all"}]
+        doc["nodes"][0]["skin"] = rng.choice([0, 1, 4])
+    elif how == "animation":
+        doc["animations"] = [{"channels": [{"sampler": 3, "target": {"node": 0, "path": "colour"}}],
+                              "samplers": [{"input": 999, "output": 0, "interpolation": "CUBIC"}]},
+                             {"channels": "none"}]
+    else:
+        doc["nodes"][0]["name"] = "n" * 20000
+    return f"structure: {how}"
+
+
+TARGETED = {
+    "index": mutate_index, "uri": bad_uri, "accessor": bad_accessor, "buffer_view": bad_buffer_view,
+    "nodes": nested_nodes, "extension": bad_extension, "material": bad_material, "mesh": bad_mesh,
+    "texture": bad_texture, "structure": bad_structure,
+}
+TARGETED_PER_SOURCE = 2  # of each kind
+
+
+# --- random mutations ----------------------------------------------------------------------------
+
+def random_edit(rng, doc):
+    found = [(p, v) for p, v in paths(doc) if not (isinstance(v, str) and v.startswith("data:"))]
+    path, value = rng.choice(found)
+    op = rng.choice(["type_swap", "type_swap", "delete", "extreme", "extreme", "duplicate"])
+    if op == "extreme":
+        numeric = [(p, v) for p, v in found if isinstance(v, (int, float)) and not isinstance(v, bool)]
+        if numeric:
+            path, value = rng.choice(numeric)
+        new = rng.choice(EXTREMES)
+        put(doc, path, new)
+        return op, f"{pointer(path)}: {json.dumps(value)[:30]} -> {new}"
+    if op == "delete":
+        parent = get(doc, path[:-1])
+        del parent[path[-1]]
+        return op, f"{pointer(path)} deleted"
+    if op == "duplicate":
+        parent = get(doc, path[:-1])
+        if isinstance(parent, list):
+            parent.append(copy.deepcopy(value))
+            return op, f"{pointer(path)} appended again"
+        put(doc, path, [copy.deepcopy(value), copy.deepcopy(value)])
+        return op, f"{pointer(path)} doubled into an array"
+    new = rng.choice([s for s in SWAPS if type(s) is not type(value)])
+    put(doc, path, copy.deepcopy(new))
+    return op, f"{pointer(path)}: {type(value).__name__} -> {json.dumps(new)}"
+
+
+# --- byte-level mutations (what JSON cannot say) ----------------------------------------------------
+
+def text_mutants(rng, name, doc_text, bin_chunk, write):
+    """NaN and Infinity tokens, deep nesting, truncated files, a broken .glb header."""
+    number_at = [i for i, c in enumerate(doc_text) if c.isdigit() and doc_text[i - 1] in ":[,"]
+    for k, token in enumerate(rng.sample(["NaN", "Infinity", "-Infinity", "1e999"], 2)):
+        at = rng.choice(number_at)
+        write(f"{name}.nan_token.{k}", doc_text[:at] + token + doc_text[at + 1:], bin_chunk, f"{token} at byte {at}")
+    # Deeper than a recursive parser's or walker's stack; in a material, which the writer walks.
+    depth = 100000 if name in ("cornell_box", "lit_room") else 3000
+    at = doc_text.find('"materials":[{') + len('"materials":[{')
+    write(f"{name}.deep_json.0", doc_text[:at] + '"extras":' + "[" * depth + "]" * depth + "," + doc_text[at:],
+          bin_chunk, f"material extras nested {depth} deep")
+    cut = rng.randrange(len(doc_text) // 4, len(doc_text))
+    write(f"{name}.truncated_json.0", doc_text[:cut], bin_chunk, f"cut at byte {cut}")
+    if bin_chunk is not None:  # the container itself
+        whole = glb_bytes(doc_text, bin_chunk)
+        for k, (what, data) in enumerate([
+                ("declared length too long", whole[:8] + struct.pack("<I", len(whole) * 4) + whole[12:]),
+                ("JSON chunk length too long", whole[:12] + struct.pack("<I", 2 ** 31) + whole[16:]),
+                ("version 1", whole[:4] + struct.pack("<I", 1) + whole[8:]),
+                ("file cut in the BIN chunk", whole[:len(whole) - len(bin_chunk) // 2]),
+                ("header only", whole[:12]),
+                ("BIN chunk first", whole[:12] + whole[20 + len(doc_text) + (-len(doc_text) % 4):] +
+                 whole[12:20 + len(doc_text) + (-len(doc_text) % 4)])]):
+            write(f"{name}.glb_container.{k}", None, None, what, raw=data)
+
+
+def main():
+    os.makedirs(OUT, exist_ok=True)
+    for old in os.listdir(OUT):
+        os.remove(os.path.join(OUT, old))
+    # External buffers the sources name, beside the mutants, and a short one for truncation.
+    for relative in ("samples/cornell_box/cornell_box.bin", "samples/ferren/ferren.bin",
+                     "samples/study_room/study_room.bin", "tests/fixtures/external_buffer.bin"):
+        data = open(os.path.join(ROOT, relative), "rb").read()
+        open(os.path.join(OUT, os.path.basename(relative)), "wb").write(data)
+    open(os.path.join(OUT, "truncated.bin"), "wb").write(bytes(10))
+    written = 0
+
+    def write(stem, doc_text, bin_chunk, what, raw=None, glb=None):
+        nonlocal written
+        glb = glb if glb is not None else (bin_chunk is not None or raw is not None)
+        path = os.path.join(OUT, stem + (".glb" if glb else ".gltf"))
+        data = raw if raw is not None else glb_bytes(doc_text, bin_chunk) if glb else doc_text.encode()
+        open(path, "wb").write(data)
+        written += 1
+
+    def write_doc(stem, doc, bin_chunk, what):
+        # Where the mutation was, kept in the file for whoever reads a failure (asset survives most).
+        if isinstance(doc.get("asset"), dict):
+            doc["asset"]["extras"] = {"mutation": what}
+        write(stem, dump(doc), bin_chunk, what, glb=bin_chunk is not None)
+
+    for relative in SOURCES:
+        source, bin_chunk = read_source(relative)
+        name = os.path.splitext(os.path.basename(relative))[0]
+        for kind, mutate in TARGETED.items():
+            made = 0
+            for attempt in range(12):
+                if made == TARGETED_PER_SOURCE:
+                    break
+                rng = random.Random(f"{SEED}:{name}:{kind}:{attempt}")
+                doc = copy.deepcopy(source)
+                if kind == "uri" and bin_chunk is not None:
+                    doc["buffers"].append({"byteLength": 4, "uri": "x.bin"})
+                what = mutate(rng, doc)
+                if what is None:
+                    continue
+                write_doc(f"{name}.{kind}.{made}", doc, bin_chunk, what)
+                made += 1
+        for k in range(1):
+            rng = random.Random(f"{SEED}:{name}:truncate:{k}")
+            doc = copy.deepcopy(source)
+            what, chunk = truncate_buffer(rng, doc, bin_chunk)
+            if what:
+                write_doc(f"{name}.truncated_buffer.{k}", doc, chunk, what)
+        for k in range(RANDOM_PER_SOURCE):
+            rng = random.Random(f"{SEED}:{name}:random:{k}")
+            doc = copy.deepcopy(source)
+            edits = [random_edit(rng, doc) for _ in range(1 + k % 3)]
+            write_doc(f"{name}.{edits[0][0]}.{k}", doc, bin_chunk, "; ".join(e[1] for e in edits))
+        text_mutants(random.Random(f"{SEED}:{name}:text"), name, dump(source), bin_chunk, write)
+    print(f"make_corpus: wrote {written} files to {os.path.relpath(OUT, ROOT)}", file=sys.stderr)
+
+
+if __name__ == "__main__":
+    main()
