@@ -138,6 +138,18 @@ BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& optio
   if (options.threads > 0)
     thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, options.threads);
 
+  // The loader holds each material's luminance to kMaxLuminance; the emission scale must not
+  // multiply it past that.
+  for (const Material& m : scene.materials) {
+    const double luminance = double(max_component(m.emissive)) * m.emissive_strength * options.emission_scale;
+    if (luminance > kMaxLuminance) {
+      char text[96];
+      std::snprintf(text, sizeof text, "' would glow at %.3g cd/m2 under the emission scale %g, above the %g",
+                    luminance, double(options.emission_scale), kMaxLuminance);
+      throw InputError("material '" + clipped(m.name) + text + " radbake bakes");
+    }
+  }
+
   Progress progress(on_progress);
   BakeResult result;
   BakeReport& report = result.report;

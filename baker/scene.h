@@ -10,6 +10,12 @@
 
 namespace radbake {
 
+// The brightest light radbake bakes. Beyond these, float products in the bake (intensity x colour
+// / distance^2, luminance x area) come near float's 3.4e38 and the energy balance turns to NaN.
+// The sun gives 1.2e5 lux and its disc 1.6e9 cd/m2, so real scenes stay many orders below.
+constexpr double kMaxLightIntensity = 1e20;  // candela (point, spot) or lux (directional), times colour
+constexpr double kMaxLuminance = 1e20;       // cd/m2: emissiveFactor x emissiveStrength x --emission-scale
+
 // Pixels as stored in the file, RGBA, 8 or 16 bits per channel, rows top to bottom. No colour
 // decoding yet: one image may be an sRGB colour texture for one material and linear data for another.
 struct Image {

@@ -13,11 +13,6 @@ namespace {
 
 using json = nlohmann::json;
 
-// Beyond these, float products in the bake (intensity x colour / distance^2, luminance x area)
-// come near float's 3.4e38 and the energy balance turns to NaN. The sun gives 1.2e5 lux and its
-// disc 1.6e9 cd/m2, so real scenes stay many orders of magnitude below.
-constexpr double kMaxLightIntensity = 1e20;  // candela (point, spot) or lux (directional), times colour
-constexpr double kMaxLuminance = 1e20;       // cd/m2, emissiveFactor x emissiveStrength
 constexpr double kMaxTextureTransform = 1e6; // |offset|, |scale|, |rotation|
 constexpr uint64_t kLargestWhole = uint64_t(1) << 53;  // JSON numbers are doubles
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <functional>
 
+#include "baker/bake.h"
 #include "baker/errors.h"
 #include "baker/finite_checks.h"
 #include "baker/material_sampler.h"
@@ -68,6 +69,26 @@ TEST(FiniteChecks, AnInfiniteEmissionIsStoppedWhereTheElementsAreMade) {
   q.elements.emission[0].x = INFINITY;
   const std::string text = message_of([&] { check_elements({q.scene, q.surface, q.elements}); });
   EXPECT_NE(text.find("after elements: the position, area or material of element 0"), std::string::npos) << text;
+}
+
+TEST(FiniteChecks, AnEmissionScaleThatMultipliesALuminancePastTheBoundIsRefusedBeforeBaking) {
+  // 1e15 cd/m2 passes the loader's bound of 1e20; times an emission scale of 1e9 it would not,
+  // and exitance times a large area would overflow float.
+  Scene scene;
+  int lamp = test::add_material(scene, {0.5f, 0.5f, 0.5f}, {1, 1, 1}, 1e15f);
+  test::add_quad(scene, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, lamp, "lamp");
+  const Atlas atlas = test::unwrap(scene, {8.0f, 64, 2});
+  BakeOptions options;
+  options.emission_scale = 1e9f;
+  try {
+    bake(scene, atlas, options);
+    FAIL() << "baked";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("cd/m2 under the emission scale 1e+09, above the 1e+20"), std::string::npos)
+        << e.what();
+  }
+  options.emission_scale = 1e4f;  // 1e19 cd/m2: within the bound, and finite
+  EXPECT_NO_THROW(bake(scene, atlas, options));
 }
 
 }  // namespace
