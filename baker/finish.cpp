@@ -5,6 +5,51 @@
 
 namespace radbake {
 
+void dilate_page(LightmapPage& page) {
+  // Ring by ring: each empty texel takes the mean of its already-filled 8-neighbours, until the
+  // whole page is filled.
+  const int w = page.width, h = page.height;
+  std::vector<uint8_t> filled(page.valid);
+  std::vector<int> frontier, next;
+  auto consider = [&](int x, int y, std::vector<int>& into) {
+    if (x < 0 || y < 0 || x >= w || y >= h) return;
+    int idx = y * w + x;
+    if (filled[size_t(idx)] == 0) {
+      filled[size_t(idx)] = 2;  // queued
+      into.push_back(idx);
+    }
+  };
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      if (page.valid[size_t(y * w + x)])
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dx = -1; dx <= 1; ++dx) consider(x + dx, y + dy, frontier);
+  while (!frontier.empty()) {
+    std::vector<Rgb> ring(frontier.size());
+    for (size_t k = 0; k < frontier.size(); ++k) {
+      int x = frontier[k] % w, y = frontier[k] / w, count = 0;
+      Rgb acc{};
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          int nx = x + dx, ny = y + dy;
+          if (nx < 0 || ny < 0 || nx >= w || ny >= h || filled[size_t(ny * w + nx)] != 1) continue;
+          acc += page.texels[size_t(ny * w + nx)];
+          ++count;
+        }
+      ring[k] = count ? acc / float(count) : Rgb{};
+    }
+    next.clear();
+    for (size_t k = 0; k < frontier.size(); ++k) {
+      page.texels[size_t(frontier[k])] = ring[k];
+      filled[size_t(frontier[k])] = 1;
+    }
+    for (int idx : frontier)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) consider(idx % w + dx, idx / w + dy, next);
+    frontier.swap(next);
+  }
+}
+
 std::vector<LightmapPage> compose_pages(const Elements& e, const std::vector<Rgb>& values,
                                         const std::vector<AtlasPage>& pages, bool dilate) {
   std::vector<LightmapPage> out(pages.size());
@@ -19,51 +64,8 @@ std::vector<LightmapPage> compose_pages(const Elements& e, const std::vector<Rgb
     out[e.page[i]].texels[e.texel[i]] = values[i];
     out[e.page[i]].valid[e.texel[i]] = 1;
   }
-  if (!dilate) return out;
-  // Dilation ring by ring: each empty texel takes the mean of its already-filled 8-neighbours,
-  // until the whole page is filled.
-  for (LightmapPage& page : out) {
-    const int w = page.width, h = page.height;
-    std::vector<uint8_t> filled(page.valid);
-    std::vector<int> frontier, next;
-    auto consider = [&](int x, int y, std::vector<int>& into) {
-      if (x < 0 || y < 0 || x >= w || y >= h) return;
-      int idx = y * w + x;
-      if (filled[size_t(idx)] == 0) {
-        filled[size_t(idx)] = 2;  // queued
-        into.push_back(idx);
-      }
-    };
-    for (int y = 0; y < h; ++y)
-      for (int x = 0; x < w; ++x)
-        if (page.valid[size_t(y * w + x)])
-          for (int dy = -1; dy <= 1; ++dy)
-            for (int dx = -1; dx <= 1; ++dx) consider(x + dx, y + dy, frontier);
-    while (!frontier.empty()) {
-      std::vector<Rgb> ring(frontier.size());
-      for (size_t k = 0; k < frontier.size(); ++k) {
-        int x = frontier[k] % w, y = frontier[k] / w, count = 0;
-        Rgb acc{};
-        for (int dy = -1; dy <= 1; ++dy)
-          for (int dx = -1; dx <= 1; ++dx) {
-            int nx = x + dx, ny = y + dy;
-            if (nx < 0 || ny < 0 || nx >= w || ny >= h || filled[size_t(ny * w + nx)] != 1) continue;
-            acc += page.texels[size_t(ny * w + nx)];
-            ++count;
-          }
-        ring[k] = count ? acc / float(count) : Rgb{};
-      }
-      next.clear();
-      for (size_t k = 0; k < frontier.size(); ++k) {
-        page.texels[size_t(frontier[k])] = ring[k];
-        filled[size_t(frontier[k])] = 1;
-      }
-      for (int idx : frontier)
-        for (int dy = -1; dy <= 1; ++dy)
-          for (int dx = -1; dx <= 1; ++dx) consider(idx % w + dx, idx / w + dy, next);
-      frontier.swap(next);
-    }
-  }
+  if (dilate)
+    for (LightmapPage& page : out) dilate_page(page);
   return out;
 }
 

@@ -17,6 +17,10 @@ struct LightmapPage {
   std::vector<uint8_t> valid;  // 1 where a valid element wrote the texel (before dilation)
 };
 
+// Fills every texel that no element wrote (valid == 0) from its nearest written neighbours, so
+// bilinear filtering never reads an unlit texel anywhere on the page.
+void dilate_page(LightmapPage& page);
+
 // With `dilate` false, texels without a valid element stay black: what the debug dumps show.
 std::vector<LightmapPage> compose_pages(const Elements& elements, const std::vector<Rgb>& values,
                                         const std::vector<AtlasPage>& pages, bool dilate = true);

@@ -105,6 +105,7 @@ struct Light {
   Vec3 direction{0, 0, -1};  // unit, the way the light travels (the node's -Z)
   float range = 0;      // metres; 0 means unlimited
   float inner_cone_angle = 0, outer_cone_angle = 0.7853982f;  // radians, spot only
+  int source_index = -1;  // which of the file's lights this is, for the writer
 };
 
 struct SceneSummary {

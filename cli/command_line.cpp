@@ -144,6 +144,19 @@ bake options:
   --light-rays N          shadow rays per texel per punctual light (default 4)
   --patch-size N          patch side in texels, a power of two up to 16384, 0 = auto (default 0)
   --png-scale X|auto      value (lux or lm/m2) that the PNG encodes as white (default auto)
+  --display WHAT          the display file NAME_display.glb, for any glTF viewer: page (pre-lit
+                          pages on unlit materials) | vertex (base colour x pre-lit COLOR_0) |
+                          none (default page)
+  --display-detail N|auto pre-lit texels per lightmap texel along a side, 1, 2 or 4, so base
+                          colour textures keep their detail (default auto: what the textures
+                          hold, up to 4, pages up to 4096)
+  --exposure X|auto       display value per cd/m2 for the display file and the three.js plugin
+                          (default auto: the log-mean luminance shows at --key)
+  --key X                 display value (linear, 0..1) of the log-mean luminance (default 0.18)
+  --color-0 WHAT          what the engine file's COLOR_0 holds: source (the input's own, a base
+                          colour multiplier) | light (baked light / color_0_intensity) | prelit
+                          (exposed display colour of a white surface) (default source; the
+                          baked light is always in _BAKED_LIGHT)
   --emission-scale X      multiply glTF emission before reading it as cd/m2, 1e-6..1e9 (default 1;
                           683 for Blender's exporter, which converts lamps to candela but not
                           emission)
@@ -370,6 +383,25 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
        }},
       {"--emission-scale", [&](const std::string& v) { b.bake.emission_scale = float(parse_number("--emission-scale", v, 1e-6, 1e9)); }},
       {"--png-scale", [&](const std::string& v) { b.png_scale = v == "auto" ? 0.0f : float(parse_number("--png-scale", v, 1e-30, 1e30)); }},
+      {"--display", [&](const std::string& v) {
+         if (v == "page") b.display = DisplayMode::Page;
+         else if (v == "vertex") b.display = DisplayMode::Vertex;
+         else if (v == "none") b.display = DisplayMode::None;
+         else throw UsageError("option --display must be page, vertex or none" + got(v));
+       }},
+      {"--display-detail", [&](const std::string& v) {
+         if (v == "auto") b.display_detail = 0;
+         else if (v == "1" || v == "2" || v == "4") b.display_detail = std::stoi(v);
+         else throw UsageError("option --display-detail must be 1, 2, 4 or auto" + got(v));
+       }},
+      {"--exposure", [&](const std::string& v) { b.exposure.exposure = v == "auto" ? 0.0f : float(parse_number("--exposure", v, 1e-30, 1e30)); }},
+      {"--key", [&](const std::string& v) { b.exposure.key = float(parse_number("--key", v, 1e-6, 1)); }},
+      {"--color-0", [&](const std::string& v) {
+         if (v == "source") b.color_0 = Color0::Source;
+         else if (v == "light") b.color_0 = Color0::Light;
+         else if (v == "prelit") b.color_0 = Color0::Prelit;
+         else throw UsageError("option --color-0 must be source, light or prelit" + got(v));
+       }},
   };
   std::map<std::string, Flag> flags = {
       {"--quiet", [&] { b.quiet = true; }},
@@ -430,6 +462,11 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
       {"light-rays", number(b.bake.direct.punctual_rays)},
       {"patch-size", b.bake.patches.block_size > 0 ? number(b.bake.patches.block_size) : "auto"},
       {"png-scale", b.png_scale > 0 ? number(b.png_scale) : "auto"},
+      {"display", b.display == DisplayMode::Page ? "page" : b.display == DisplayMode::Vertex ? "vertex" : "none"},
+      {"display-detail", b.display_detail > 0 ? number(b.display_detail) : "auto"},
+      {"exposure", b.exposure.exposure > 0 ? number(b.exposure.exposure) : "auto"},
+      {"key", number(b.exposure.key)},
+      {"color-0", b.color_0 == Color0::Source ? "source" : b.color_0 == Color0::Light ? "light" : "prelit"},
       {"emission-scale", number(b.bake.emission_scale)},
       {"ambient", b.bake.solve.ambient_term ? "yes" : "no"},
       {"direct-only", b.bake.plan.direct_only ? "yes" : "no"},

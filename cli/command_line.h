@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "baker/bake.h"
+#include "baker/exposure.h"
 #include "baker/lightmap_difference.h"
 #include "io/gltf.h"
 #include "uv/atlas.h"
@@ -17,12 +18,23 @@ struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// What the display file (NAME_display.glb) shows its light with.
+enum class DisplayMode {
+  Page,    // pre-lit pages on the lightmap UVs
+  Vertex,  // the surface's base colour times pre-lit COLOR_0
+  None,    // no display file
+};
+
 struct BakeCommand {
   std::string input, output;
   LoadOptions load;
   AtlasOptions atlas;
   BakeOptions bake;
   float png_scale = 0;  // 0: automatic
+  DisplayMode display = DisplayMode::Page;
+  int display_detail = 0;      // pre-lit texels per lightmap texel along a side (1, 2, 4); 0: automatic
+  ExposureOptions exposure;    // display units per cd/m2; automatic by default
+  Color0 color_0 = Color0::Source;
   bool quiet = false;
   bool debug_dumps = false;
   std::vector<std::pair<std::string, std::string>> effective;  // every option and its value, for the report

@@ -16,6 +16,7 @@
 #include "cli/interrupts.h"
 #include "cli/progress_display.h"
 #include "io/debug_dumps.h"
+#include "io/display_gltf.h"
 #include "io/gltf.h"
 #include "io/lightmap_images.h"
 #include "io/output_folder.h"
@@ -64,6 +65,42 @@ class PreviewWriter {
   bool quiet_;
   float scale_ = 0;
 };
+
+// The exposure both files record, metered on the pre-lit light, and the display file.
+radbake::DisplaySummary write_display(const radbake::BakeCommand& cmd, const radbake::Scene& scene,
+                                      const radbake::Atlas& atlas, const radbake::BakeResult& result,
+                                      const std::string& folder, const std::string& name) {
+  using namespace radbake;
+  const Surface surface = build_surface(scene, atlas);
+  PrelitOptions prelit;
+  prelit.detail = cmd.display == DisplayMode::Page ? cmd.display_detail : 1;
+  prelit.emission_scale = cmd.bake.emission_scale;
+  prelit.lightmap_is_irradiance = cmd.bake.store == StoredQuantity::Irradiance;
+  const PrelitPages pages = prelit_pages(scene, surface, result.pages, prelit);
+  const Exposure exposure = choose_exposure(pages.pages, cmd.exposure);
+  DisplaySummary summary;
+  summary.exposure = exposure.exposure;
+  summary.exposure_automatic = exposure.automatic;
+  summary.log_mean_luminance = exposure.log_mean_luminance;
+  if (cmd.display == DisplayMode::None) return summary;
+  const std::vector<DisplayMesh> meshes = atlas_display_meshes(atlas, result.vertex_values);
+  DisplayInput input;
+  input.scene = &scene;
+  input.atlas = &atlas;
+  input.pages = &pages;
+  input.meshes = &meshes;
+  input.vertex_lit = cmd.display == DisplayMode::Vertex;
+  input.lightmap_is_irradiance = prelit.lightmap_is_irradiance;
+  input.emission_scale = cmd.bake.emission_scale;
+  input.exposure = exposure;
+  stop_if_interrupted();
+  const DisplayOutput written = write_display_gltf(input, folder, name);
+  summary.file = written.file;
+  summary.shows = input.vertex_lit ? "vertex light" : "pre-lit pages";
+  summary.prelit_detail = input.vertex_lit ? 0 : pages.detail;
+  summary.triangles = written.triangles;
+  return summary;
+}
 
 int run_bake(const radbake::BakeCommand& cmd) {
   using namespace radbake;
@@ -123,7 +160,13 @@ int run_bake(const radbake::BakeCommand& cmd) {
   LightmapFiles files = write_lightmaps(result.pages, folder.path(), name, irradiance ? "irradiance" : "radiosity",
                                         irradiance ? "lx" : "lm/m2", scale);
   stop_if_interrupted();
-  GltfOutput gltf = write_gltf(*loaded.source, loaded.scene, atlas, result.vertex_values, files, folder.path(), name);
+  EngineFileOptions engine;
+  engine.color_0 = cmd.color_0;
+  run.display = write_display(cmd, loaded.scene, atlas, result, folder.path(), name);
+  engine.display_exposure = run.display.exposure;
+  engine.display_file = run.display.file;
+  stop_if_interrupted();
+  GltfOutput gltf = write_gltf(*loaded.source, loaded.scene, atlas, result.vertex_values, files, folder.path(), name, engine);
   run.io_times.push_back({"write", seconds_since(t)});
 
   std::vector<std::string> warnings = loaded.scene.warnings;

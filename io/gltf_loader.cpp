@@ -313,6 +313,7 @@ class SceneBuilder {
     const tinygltf::Light& in = model_.lights[size_t(index)];
     Light light;
     light.name = in.name.empty() ? "light " + std::to_string(index) : clipped(in.name);
+    light.source_index = index;
     if (in.type == "point") light.type = LightType::Point;
     else if (in.type == "spot") light.type = LightType::Spot;
     else light.type = LightType::Directional;

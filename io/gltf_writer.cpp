@@ -10,6 +10,9 @@
 #include <tuple>
 
 #include "baker/errors.h"
+#include "baker/prelit_pages.h"
+#include "io/gltf_binary.h"
+#include "io/gltf_prune.h"
 #include "io/gltf_source.h"
 
 namespace radbake {
@@ -18,8 +21,6 @@ namespace {
 using json = nlohmann::ordered_json;
 namespace fs = std::filesystem;
 
-constexpr int kArrayBuffer = 34962, kElementArrayBuffer = 34963;
-
 void write_bytes(const fs::path& path, const uint8_t* data, size_t size) {
   std::ofstream out(path, std::ios::binary);
   out.write(reinterpret_cast<const char*>(data), std::streamsize(size));
@@ -27,73 +28,6 @@ void write_bytes(const fs::path& path, const uint8_t* data, size_t size) {
 }
 
 bool is_data_uri(const std::string& uri) { return uri.rfind("data:", 0) == 0; }
-
-double component(const uint8_t* p, int component_type) {
-  switch (component_type) {
-    case TINYGLTF_COMPONENT_TYPE_BYTE: { int8_t v; std::memcpy(&v, p, 1); return v; }
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return *p;
-    case TINYGLTF_COMPONENT_TYPE_SHORT: { int16_t v; std::memcpy(&v, p, 2); return v; }
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: { uint16_t v; std::memcpy(&v, p, 2); return v; }
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: { uint32_t v; std::memcpy(&v, p, 4); return v; }
-    default: { float v; std::memcpy(&v, p, 4); return v; }
-  }
-}
-
-void add_bounds(json& accessor, const std::vector<uint8_t>& bytes, size_t count, int component_type) {
-  const size_t cs = component_size(component_type);
-  const size_t n = bytes.size() / count / cs;
-  std::vector<double> lo(n, INFINITY), hi(n, -INFINITY);
-  for (size_t i = 0; i < count; ++i)
-    for (size_t c = 0; c < n; ++c) {
-      double v = component(&bytes[(i * n + c) * cs], component_type);
-      lo[c] = std::min(lo[c], v);
-      hi[c] = std::max(hi[c], v);
-    }
-  // Floats are written as the float values themselves, so validators compare like with like.
-  accessor["min"] = json::array();
-  accessor["max"] = json::array();
-  for (size_t c = 0; c < n; ++c) {
-    accessor["min"].push_back(component_type == TINYGLTF_COMPONENT_TYPE_FLOAT ? json(float(lo[c])) : json(lo[c]));
-    accessor["max"].push_back(component_type == TINYGLTF_COMPONENT_TYPE_FLOAT ? json(float(hi[c])) : json(hi[c]));
-  }
-}
-
-// Appends accessors and their buffer views over one new binary buffer.
-class BinaryWriter {
- public:
-  BinaryWriter(json& doc, int buffer_index) : doc_(doc), buffer_(buffer_index) {}
-
-  int add(const std::vector<uint8_t>& bytes, size_t count, const char* type, int component_type, bool normalized,
-          int target, bool with_bounds) {
-    while (data_.size() % 4) data_.push_back(0);
-    json view = {{"buffer", buffer_}, {"byteOffset", data_.size()}, {"byteLength", bytes.size()}};
-    if (target) view["target"] = target;
-    data_.insert(data_.end(), bytes.begin(), bytes.end());
-    doc_["bufferViews"].push_back(view);
-    json accessor = {{"bufferView", doc_["bufferViews"].size() - 1},
-                     {"componentType", component_type},
-                     {"count", count},
-                     {"type", type}};
-    if (normalized) accessor["normalized"] = true;
-    if (with_bounds && count > 0) add_bounds(accessor, bytes, count, component_type);
-    doc_["accessors"].push_back(accessor);
-    return int(doc_["accessors"].size() - 1);
-  }
-
-  const std::vector<uint8_t>& data() const { return data_; }
-
- private:
-  json& doc_;
-  int buffer_;
-  std::vector<uint8_t> data_;
-};
-
-template <typename T>
-std::vector<uint8_t> as_bytes(const std::vector<T>& v) {
-  std::vector<uint8_t> out(v.size() * sizeof(T));
-  if (!out.empty()) std::memcpy(out.data(), v.data(), out.size());
-  return out;
-}
 
 // Every texCoord a material's textures read, including KHR_texture_transform overrides.
 void collect_tex_coords(const json& node, std::vector<int>& sets) {
@@ -110,9 +44,9 @@ void collect_tex_coords(const json& node, std::vector<int>& sets) {
 class Writer {
  public:
   Writer(const GltfSource& src, const Scene& scene, const Atlas& atlas, const std::vector<std::vector<Rgb>>& values,
-         const LightmapFiles& lightmaps, const fs::path& folder, const std::string& name)
+         const LightmapFiles& lightmaps, const fs::path& folder, const std::string& name, const EngineFileOptions& options)
       : src_(src), scene_(scene), atlas_(atlas), values_(values), lightmaps_(lightmaps), folder_(folder), name_(name),
-        doc_(json::parse(src.json_text)) {}
+        options_(options), doc_(json::parse(src.json_text)) {}
 
   GltfOutput run() {
     // COLOR_0 must stay within [0, 1]; its scale is the PNG's unless a vertex is brighter.
@@ -138,7 +72,10 @@ class Writer {
     write_bytes(folder_ / bin_name, bin.data().data(), bin.data().size());
     out_.written_files.push_back(bin_name);
     add_extension_used("MOZ_lightmap");
+    mark_baked_lights();
     describe_bake();
+    prune_unused_objects(doc_, out_.warnings);
+    remove_unreferenced_files();
     out_.gltf_file = name_ + ".gltf";
     std::ofstream file(folder_ / out_.gltf_file);
     file << doc_.dump(2) << "\n";
@@ -237,8 +174,10 @@ class Writer {
     }
   }
 
+  // No mipmaps: a chart's neighbours are a few texels away, and mip levels average them in (see
+  // docs/mip_bleeding.md).
   void add_lightmap_textures() {
-    doc_["samplers"].push_back({{"magFilter", 9729}, {"minFilter", 9987}, {"wrapS", 33071}, {"wrapT", 33071}});
+    doc_["samplers"].push_back({{"magFilter", 9729}, {"minFilter", 9729}, {"wrapS", 33071}, {"wrapT", 33071}});
     const int sampler = int(doc_["samplers"].size() - 1);
     for (const std::string& png : lightmaps_.png) {
       doc_["images"].push_back({{"uri", png}, {"mimeType", "image/png"}});
@@ -361,30 +300,28 @@ class Writer {
       if (!attributes.contains("TEXCOORD_0")) attributes["TEXCOORD_0"] = uv_accessor;
     }
     if (!lm.kept_input_uvs || mode != 4) {
-      std::vector<uint8_t> indices;
-      int type;
-      if (vertex_count < 65536) {
-        std::vector<uint16_t> narrow(lm.triangles.begin(), lm.triangles.end());
-        indices = as_bytes(narrow);
-        type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
-      } else {
-        indices = as_bytes(lm.triangles);
-        type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
-      }
+      const auto [indices, type] = index_bytes(lm.triangles, vertex_count);
       prim["indices"] = bin.add(indices, lm.triangles.size(), "SCALAR", type, false, kElementArrayBuffer, false);
       prim["mode"] = 4;
     }
-    if (attributes.contains("COLOR_0")) {
-      json source_colors = attributes["COLOR_0"];
-      attributes["_SOURCE_COLOR_0"] = source_colors;
-      out_.warnings.push_back(inst.name + ": its COLOR_0 moved to _SOURCE_COLOR_0 to make room for the baked values");
+    std::vector<float> light, colors;
+    for (Rgb c : values_[i]) light.insert(light.end(), {c.x, c.y, c.z});
+    // An earlier bake's light (re-baking our own output) is replaced, not kept beside the new.
+    attributes["_BAKED_LIGHT"] = bin.add(as_bytes(light), vertex_count, "VEC3", TINYGLTF_COMPONENT_TYPE_FLOAT, false,
+                                         kArrayBuffer, false);
+    if (options_.color_0 != Color0::Source) {
+      if (attributes.contains("COLOR_0")) {
+        json source_colors = attributes["COLOR_0"];
+        attributes["_SOURCE_COLOR_0"] = source_colors;
+        out_.warnings.push_back(inst.name + ": its COLOR_0 moved to _SOURCE_COLOR_0 to make room for the baked values");
+      }
+      for (Rgb c : values_[i]) {
+        const Rgb shown = options_.color_0 == Color0::Light ? c / color_scale_ : prelit_vertex(c) * options_.display_exposure;
+        for (int k = 0; k < 3; ++k) colors.push_back(std::clamp(shown[k], 0.0f, 1.0f));
+      }
+      attributes["COLOR_0"] = bin.add(as_bytes(colors), vertex_count, "VEC3", TINYGLTF_COMPONENT_TYPE_FLOAT, false,
+                                      kArrayBuffer, false);
     }
-    std::vector<float> colors;
-    for (Rgb c : values_[i]) {
-      Rgb scaled = c / color_scale_;
-      colors.insert(colors.end(), {scaled.x, scaled.y, scaled.z});
-    }
-    attributes["COLOR_0"] = bin.add(as_bytes(colors), vertex_count, "VEC3", TINYGLTF_COMPONENT_TYPE_FLOAT, false, kArrayBuffer, false);
     prim["attributes"] = attributes;
     prim["material"] = lightmap_material(prim.contains("material") ? prim["material"].get<int>() : -1, lm.page,
                                          lightmap_set, back || has_back_[i]);
@@ -396,10 +333,43 @@ class Writer {
     if (std::find(used.begin(), used.end(), ext) == used.end()) used.push_back(ext);
   }
 
+  // Input buffers and images are copied before the bake's own replace some of them (an earlier
+  // bake's pages, accessors of remapped attributes); the copies nothing refers to any more go.
+  void remove_unreferenced_files() {
+    std::set<std::string> referenced;
+    for (const char* kind : {"buffers", "images"})
+      if (doc_.contains(kind))
+        for (const json& object : doc_[kind]) referenced.insert(object.value("uri", ""));
+    std::vector<std::string> kept;
+    for (const std::string& file : out_.written_files) {
+      if (referenced.count(file)) kept.push_back(file);
+      else fs::remove(folder_ / file);
+    }
+    out_.written_files = kept;
+  }
+
+  // Engines light the scene with its punctual lights; the ones radbake baked are in the lightmap
+  // already, so an engine (or the three.js plugin) that adds them again lights the scene twice.
+  void mark_baked_lights() {
+    json* lights = nullptr;
+    if (doc_.contains("extensions") && doc_["extensions"].contains("KHR_lights_punctual"))
+      lights = &doc_["extensions"]["KHR_lights_punctual"]["lights"];
+    if (!lights || !lights->is_array()) return;
+    for (const Light& light : scene_.lights) {
+      if (light.source_index < 0 || size_t(light.source_index) >= lights->size()) continue;
+      json& extras = (*lights)[size_t(light.source_index)]["extras"];
+      if (extras.is_null()) extras = json::object();
+      if (extras.is_object()) extras["radbake"] = {{"baked", true}};
+    }
+  }
+
   void describe_bake() {
     json pages = json::array();
     for (size_t p = 0; p < lightmaps_.png.size(); ++p)
       pages.push_back({{"png", lightmaps_.png[p]}, {"exr", lightmaps_.exr[p]}, {"texture", page_texture_[p]}});
+    const char* color_0 = options_.color_0 == Color0::Source ? "the input's own COLOR_0 (a base colour multiplier)"
+                          : options_.color_0 == Color0::Light ? "linear RGB per vertex; quantity = COLOR_0 * color_0_intensity"
+                                                              : "pre-lit display colour of a white surface: clip(quantity / pi * display_exposure), linear";
     json info = {
         {"generator", "radbake"},
         {"quantity", lightmaps_.quantity},
@@ -408,9 +378,16 @@ class Writer {
         {"exr", "linear half-float RGB, the quantity in its unit"},
         {"png", "8-bit sRGB-encoded; quantity = srgb_to_linear(png / 255) * MOZ_lightmap.intensity"},
         {"png_intensity", lightmaps_.png_scale},
-        {"color_0", "linear RGB per vertex; quantity = COLOR_0 * color_0_intensity"},
-        {"color_0_intensity", color_scale_},
+        {"baked_light", "_BAKED_LIGHT: linear RGB per vertex, the quantity in its unit"},
+        {"color_0", color_0},
     };
+    if (options_.color_0 == Color0::Light) info["color_0_intensity"] = color_scale_;
+    if (options_.display_exposure > 0) {
+      info["display_exposure"] = options_.display_exposure;
+      info["display"] = "linear display value = luminance (cd/m2) * display_exposure; a Lambertian surface of "
+                        "reflectance r under E lux has luminance r * E / pi";
+    }
+    if (!options_.display_file.empty()) info["display_file"] = options_.display_file;
     json& extras = doc_["extras"];
     if (extras.is_null()) extras = json::object();
     if (extras.is_object()) extras["radbake"] = info;
@@ -424,6 +401,7 @@ class Writer {
   const LightmapFiles& lightmaps_;
   fs::path folder_;
   std::string name_;
+  EngineFileOptions options_;
   json doc_, original_meshes_, original_materials_;
   std::map<int, int> mesh_of_node_;
   std::set<int> meshes_taken_;
@@ -439,8 +417,8 @@ class Writer {
 
 GltfOutput write_gltf(const GltfSource& source, const Scene& scene, const Atlas& atlas,
                       const std::vector<std::vector<Rgb>>& vertex_values, const LightmapFiles& lightmaps,
-                      const std::string& folder, const std::string& name) {
-  return Writer(source, scene, atlas, vertex_values, lightmaps, folder, name).run();
+                      const std::string& folder, const std::string& name, const EngineFileOptions& options) {
+  return Writer(source, scene, atlas, vertex_values, lightmaps, folder, name, options).run();
 }
 
 }  // namespace radbake

@@ -1,5 +1,6 @@
 #include "io/lightmap_images.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
@@ -75,11 +76,34 @@ LightmapFiles write_lightmaps(const std::vector<LightmapPage>& pages, const std:
   return files;
 }
 
-void write_lightmap_png(const std::string& path, const LightmapPage& page, float scale) {
+namespace {
+
+std::vector<uint8_t> srgb_pixels(const LightmapPage& page, float multiplier) {
   std::vector<uint8_t> encoded(page.texels.size() * 3);
   for (size_t t = 0; t < page.texels.size(); ++t)
-    for (int c = 0; c < 3; ++c) encoded[3 * t + size_t(c)] = encode_srgb(page.texels[t][c] / scale);
-  write_png(path, page.width, page.height, encoded);
+    for (int c = 0; c < 3; ++c) encoded[3 * t + size_t(c)] = encode_srgb(page.texels[t][c] * multiplier);
+  return encoded;
+}
+
+}  // namespace
+
+void write_lightmap_png(const std::string& path, const LightmapPage& page, float scale) {
+  write_png(path, page.width, page.height, srgb_pixels(page, 1.0f / scale));
+}
+
+std::vector<uint8_t> encode_png(int width, int height, const std::vector<uint8_t>& rgb) {
+  std::vector<unsigned char> bytes;
+  OIIO::Filesystem::IOVecOutput memory(bytes);
+  auto out = OIIO::ImageOutput::create("page.png", &memory);
+  if (!out) throw std::runtime_error(std::string("cannot create a PNG encoder: ") + OIIO::geterror());
+  OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
+  if (!out->open("page.png", spec) || !out->write_image(OIIO::TypeDesc::UINT8, rgb.data()) || !out->close())
+    throw std::runtime_error("cannot encode a PNG: " + out->geterror());
+  return std::vector<uint8_t>(bytes.begin(), bytes.end());
+}
+
+std::vector<uint8_t> encode_display_png(const LightmapPage& luminance, float exposure) {
+  return encode_png(luminance.width, luminance.height, srgb_pixels(luminance, exposure));
 }
 
 LightmapPage read_lightmap_exr(const std::string& path) {

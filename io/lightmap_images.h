@@ -28,6 +28,12 @@ void write_lightmap_png(const std::string& path, const LightmapPage& page, float
 // 8-bit RGB pixels, rows top to bottom, as a PNG (written as they are: no encoding).
 void write_png(const std::string& path, int width, int height, const std::vector<uint8_t>& rgb);
 
+// 8-bit RGB pixels, rows top to bottom, as the bytes of a PNG file.
+std::vector<uint8_t> encode_png(int width, int height, const std::vector<uint8_t>& rgb);
+
+// A page of luminance (cd/m2) as a display image: sRGB-encoded luminance * exposure, clipped to 1.
+std::vector<uint8_t> encode_display_png(const LightmapPage& luminance, float exposure);
+
 // Reads an EXR page back (RGB, linear); for tests and `radbake diff`. Throws InputError naming the
 // file when it is not a readable RGB image.
 LightmapPage read_lightmap_exr(const std::string& path);

@@ -37,6 +37,17 @@ void write_report(const std::string& path, const RunInfo& run, const Scene& scen
   else
     balance["note"] = "the plan skipped interreflection, so no ray measured the light that escapes";
   const SceneSummary& s = scene.summary;
+  const DisplaySummary& d = run.display;
+  json refinement = json::array();
+  for (const auto& [triangles, rms] : d.refinement) refinement.push_back({{"triangles", triangles}, {"rms_relative", rms}});
+  json display = {{"file", d.file.empty() ? json(nullptr) : json(d.file)},
+                  {"shows", d.shows},
+                  {"exposure_per_cd_m2", d.exposure},
+                  {"exposure_automatic", d.exposure_automatic},
+                  {"log_mean_luminance_cd_m2", d.log_mean_luminance},
+                  {"triangles", d.triangles}};
+  if (d.prelit_detail > 0) display["prelit_detail"] = d.prelit_detail;
+  if (!refinement.empty()) display["vertex_light_vs_lightmap"] = refinement;
   json report = {
       {"generator", "radbake"},
       {"input", {{"file", run.input}, {"nodes", s.nodes}, {"meshes", s.meshes}, {"primitives", s.primitives},
@@ -69,6 +80,7 @@ void write_report(const std::string& path, const RunInfo& run, const Scene& scen
       {"energy_balance", balance},
       {"lightmaps", {{"quantity", lightmaps.quantity}, {"unit", lightmaps.unit},
                      {"png_intensity", lightmaps.png_scale}}},
+      {"display", display},
       {"warnings", warnings},
       {"files", run.files},
   };

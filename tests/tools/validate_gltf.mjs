@@ -28,6 +28,7 @@ for (const file of files) {
     warnings: issues.numWarnings,
     infos: issues.numInfos,
     messages: issues.messages.filter((m) => m.severity <= 1).map((m) => `${m.code} ${m.pointer ?? ''}: ${m.message}`),
+    info_codes: issues.messages.filter((m) => m.severity === 2).map((m) => `${m.code} ${m.pointer ?? ''}`),
   }));
 }
 process.exit(failed ? 1 : 0);
