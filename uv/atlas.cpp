@@ -48,6 +48,18 @@ double uv_area(const MeshView& mesh) {
   return area;
 }
 
+int largest_power_of_two_at_most(int v) {
+  int p = 1;
+  while (p <= v / 2) p *= 2;
+  return p;
+}
+
+int smallest_power_of_two_at_least(int v) {
+  int p = 1;
+  while (p < v) p *= 2;
+  return p;
+}
+
 // A kept TEXCOORD_1 layout gets a page of its own, square, sized so its texels match the density.
 int page_side_for_own_uvs(const MeshView& mesh, float density, int max_page_size) {
   double uv = uv_area(mesh);
@@ -156,7 +168,10 @@ Atlas ensure_lightmap_uvs(const std::vector<MeshView>& meshes, const AtlasOption
   Atlas atlas;
   atlas.meshes.resize(meshes.size());
   atlas.requested_density = options.texel_density;
-  const int page_size = options.max_page_size;
+  // Charts are packed into a page of this side, and each page is then trimmed to what it uses:
+  // to a power of two, or with any_page_size to a multiple of 4. The automatic density is the
+  // highest whose charts fit this page, so a power-of-two page is filled, not padded afterwards.
+  const int page_size = options.any_page_size ? options.max_page_size : largest_power_of_two_at_most(options.max_page_size);
   double total_area = 0;
   for (const MeshView& m : meshes) total_area += world_area(m);
   // A first guess for the automatic density: 70% of one page, what the packer usually reaches.
@@ -217,6 +232,11 @@ Atlas ensure_lightmap_uvs(const std::vector<MeshView>& meshes, const AtlasOption
   }
   atlas.texel_density = density;
   atlas.pages = packed.pages;
+  // Trimming only takes empty texels off the top and right: charts keep their texel positions, and
+  // lay_out_charts divides by the final page size.
+  if (!options.any_page_size)
+    for (AtlasPage& p : atlas.pages)
+      p.width = smallest_power_of_two_at_least(p.width), p.height = smallest_power_of_two_at_least(p.height);
   for (uint32_t m : packed.downscaled_meshes)
     atlas.warnings.push_back("mesh '" + meshes[m].name + "' is too large for one " + std::to_string(page_size) +
                              "-texel page at " + std::to_string(density) + " texels/m and was scaled down");

@@ -30,13 +30,18 @@ enum class InputUvPolicy {
 
 struct AtlasOptions {
   float texel_density = 0;   // texels per metre; 0 picks the highest density that fits one page
-  int max_page_size = 1024;  // texels per page side, 16..16384
+  int max_page_size = 1024;  // texels per page side, 16..16384; generated pages stay within the
+                             // largest power of two at most this unless any_page_size
   int padding = 2;           // empty texels kept between charts (bilinear reads one, dilation fills)
   bool rotate_charts = true; // charts may turn (to their smallest rectangle, and by 90 degrees to pack)
   bool fit_one_page = false; // with a density given: lower it until everything fits one page
   InputUvPolicy input_uvs = InputUvPolicy::KeepValid;
   float max_chart_normal_deviation = 50;  // degrees: a chart's faces stay within this cone
   float hard_edge_angle = 40;             // degrees: edges folding more are always seams
+  // Generated pages are powers of two on each side by default, as engines and mipmapped samplers
+  // want (a side of 508 is padded or resampled by many of them); true gives the tight page instead,
+  // a multiple of 4 up to max_page_size. A kept TEXCOORD_1 keeps its own page size either way.
+  bool any_page_size = false;
   // Called with the stage "lightmap uvs" and the fraction done, at least every few tenths of a
   // second of work; returning false stops the unwrap, which throws Cancelled (baker/errors.h), as
   // a bake's callback stops a bake. A large mesh can take minutes to unwrap.
