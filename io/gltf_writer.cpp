@@ -99,6 +99,7 @@ std::vector<uint8_t> as_bytes(const std::vector<T>& v) {
 void collect_tex_coords(const json& node, std::vector<int>& sets) {
   if (node.is_object()) {
     for (auto it = node.begin(); it != node.end(); ++it) {
+      if (it.key() == "MOZ_lightmap") continue;  // an earlier bake's lightmap, which this bake replaces
       if (it.key() == "texCoord" && it.value().is_number_integer()) sets.push_back(it.value().get<int>());
       collect_tex_coords(it.value(), sets);
     }
@@ -320,6 +321,7 @@ class Writer {
     const AtlasMesh& lm = atlas_.meshes[i];
     const int mesh = mesh_for_node(inst.node, inst.mesh);
     const bool back = inst.back_of >= 0;
+    size_t back_at = 0;
     json& primitives = doc_["meshes"][size_t(mesh)]["primitives"];
     if (back) {
       // A primitive of its own beside its front's: the front's source attributes, its own indices
@@ -327,9 +329,22 @@ class Writer {
       json copy = original_meshes_[size_t(inst.mesh)]["primitives"][size_t(inst.primitive)];
       if (!copy["extras"].is_object()) copy["extras"] = json::object();
       copy["extras"]["radbake"] = {{"back_faces_of_primitive", inst.primitive}};
-      primitives.push_back(copy);
+      // Baking radbake's output again: the earlier back primitive (which the loader left out) is
+      // replaced rather than shown beside the new one.
+      back_at = primitives.size();
+      auto back_of = [](const json& p) {
+        const json& extras = p.contains("extras") ? p["extras"] : json();
+        const json& record = extras.is_object() && extras.contains("radbake") ? extras["radbake"] : json();
+        return record.is_object() && record.contains("back_faces_of_primitive") && record["back_faces_of_primitive"].is_number_integer()
+                   ? record["back_faces_of_primitive"].get<int64_t>()
+                   : int64_t(-1);
+      };
+      for (size_t k = 0; k < primitives.size(); ++k)
+        if (back_of(primitives[k]) == inst.primitive) back_at = k;
+      if (back_at == primitives.size()) primitives.push_back(copy);
+      else primitives[back_at] = copy;
     }
-    json& prim = primitives[back ? primitives.size() - 1 : size_t(inst.primitive)];
+    json& prim = primitives[back ? back_at : size_t(inst.primitive)];
     // A working copy: inserting keys into an ordered_json object moves its members, so no
     // reference into `prim` may be held while it grows.
     json attributes = prim["attributes"];
@@ -374,7 +389,7 @@ class Writer {
       prim["indices"] = bin.add(indices, lm.triangles.size(), "SCALAR", type, false, kElementArrayBuffer, false);
       prim["mode"] = 4;
     }
-    if (attributes.contains("COLOR_0")) {
+    if (attributes.contains("COLOR_0") && !inst.color_0_was_light) {
       json source_colors = attributes["COLOR_0"];
       attributes["_SOURCE_COLOR_0"] = source_colors;
       out_.warnings.push_back(inst.name + ": its COLOR_0 moved to _SOURCE_COLOR_0 to make room for the baked values");

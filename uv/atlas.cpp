@@ -178,16 +178,47 @@ Atlas ensure_lightmap_uvs(const std::vector<MeshView>& meshes, const AtlasOption
   const float guess = float(page_size * std::sqrt(0.7 / std::max(total_area, 1e-12)));
   float density = options.texel_density > 0 ? options.texel_density : guess;
 
-  std::vector<int> own_page_side(meshes.size(), 0);
+  // Kept TEXCOORD_1 layouts get pages of their own, after the generated ones: own_page[m] indexes
+  // kept_pages.
+  std::vector<int> own_page(meshes.size(), -1);
+  std::vector<AtlasPage> kept_pages;
   std::vector<bool> generate(meshes.size(), true);
+  auto keep = [&](const std::vector<size_t>& group, AtlasPage page, const std::string& problem) {
+    if (!problem.empty())
+      for (size_t m : group) atlas.warnings.push_back("mesh '" + meshes[m].name + "': " + problem + "; used anyway");
+    for (size_t m : group) own_page[m] = int(kept_pages.size()), generate[m] = false;
+    kept_pages.push_back(page);
+  };
+  const bool may_keep = options.input_uvs != InputUvPolicy::Generate;
+  // Meshes the file lays out on one page (a re-bake of radbake's own output, or another baker's)
+  // are checked together at that page's size and keep sharing it: a page per mesh would leave each
+  // mostly empty, at the density of the whole.
+  std::map<int, std::vector<size_t>> on_input_page;
+  for (size_t m = 0; m < meshes.size(); ++m)
+    if (may_keep && meshes[m].lightmap_uvs && meshes[m].uv_page >= 0 && meshes[m].uv_page_width > 0 &&
+        meshes[m].uv_page_height > 0 && meshes[m].uv_page_width <= options.max_page_size &&
+        meshes[m].uv_page_height <= options.max_page_size)
+      on_input_page[meshes[m].uv_page].push_back(m);
+  for (const auto& [input_page, group] : on_input_page) {
+    std::vector<const MeshView*> views;
+    for (size_t m : group) views.push_back(&meshes[m]);
+    const AtlasPage page{meshes[group[0]].uv_page_width, meshes[group[0]].uv_page_height};
+    bool same_size = true;
+    for (size_t m : group) same_size &= meshes[m].uv_page_width == page.width && meshes[m].uv_page_height == page.height;
+    std::string problem = same_size ? lightmap_uv_problem(views, page.width, page.height) : "the page has two sizes";
+    if (problem.empty() || options.input_uvs == InputUvPolicy::KeepAll) {
+      keep(group, page, problem);
+    } else if (group.size() > 1) {
+      atlas.warnings.push_back(std::to_string(group.size()) + " meshes laid out on one input lightmap page cannot share it (" +
+                               problem + "); each is checked on its own");
+    }
+  }
   for (size_t m = 0; m < meshes.size(); ++m) {
-    if (!meshes[m].lightmap_uvs || options.input_uvs == InputUvPolicy::Generate) continue;
-    int side = page_side_for_own_uvs(meshes[m], density, page_size);
+    if (!may_keep || !meshes[m].lightmap_uvs || !generate[m]) continue;
+    int side = page_side_for_own_uvs(meshes[m], density, options.max_page_size);
     std::string problem = lightmap_uv_problem(meshes[m], side);
     if (problem.empty() || options.input_uvs == InputUvPolicy::KeepAll) {
-      if (!problem.empty()) atlas.warnings.push_back("mesh '" + meshes[m].name + "': " + problem + "; used anyway");
-      own_page_side[m] = side;
-      generate[m] = false;
+      keep({m}, {side, side}, problem);
       continue;
     }
     atlas.warnings.push_back("mesh '" + meshes[m].name + "': " + problem + "; generating lightmap UVs");
@@ -247,16 +278,18 @@ Atlas ensure_lightmap_uvs(const std::vector<MeshView>& meshes, const AtlasOption
     charts_of[charts[c].mesh].push_back(&charts[c]);
     placements_of[charts[c].mesh].push_back(&packed.placements[c]);
   }
+  // Only degenerate triangles to generate for: they still need a page to point at.
+  if (atlas.pages.empty() && std::count(generate.begin(), generate.end(), true)) atlas.pages.push_back({16, 16});
+  const int first_kept_page = int(atlas.pages.size());
+  atlas.pages.insert(atlas.pages.end(), kept_pages.begin(), kept_pages.end());
   uint32_t next_chart = 0;
   for (size_t m = 0; m < meshes.size(); ++m) {
     progress.poll();
-    if (own_page_side[m]) {
-      atlas.pages.push_back({own_page_side[m], own_page_side[m]});
-      atlas.meshes[m] = keep_own_uvs(meshes[m], int(atlas.pages.size() - 1), next_chart);
+    if (own_page[m] >= 0) {
+      atlas.meshes[m] = keep_own_uvs(meshes[m], first_kept_page + own_page[m], next_chart);
       continue;
     }
     int page = placements_of[m].empty() ? 0 : placements_of[m][0]->page;
-    if (atlas.pages.empty()) atlas.pages.push_back({16, 16});  // only degenerate triangles
     atlas.meshes[m] = lay_out_charts(meshes[m], charts_of[m], placements_of[m], atlas.pages[size_t(page)], page, next_chart);
     next_chart += uint32_t(charts_of[m].size());
   }

@@ -19,6 +19,12 @@ struct MeshView {
   const uint32_t* triangles = nullptr;  // three indices per triangle
   size_t triangle_count = 0;
   const Vec2* lightmap_uvs = nullptr;  // the input's TEXCOORD_1, or null
+  // The input page those UVs were laid out on, when the file names one (a MOZ_lightmap texture, as
+  // radbake and other bakers write): meshes naming the same page are checked together and, when
+  // valid, keep sharing one page of its size. -1: none named; the mesh is checked, and gets a
+  // page, on its own.
+  int uv_page = -1;
+  int uv_page_width = 0, uv_page_height = 0;  // texels
   std::string name;                    // for messages
 };
 
@@ -93,6 +99,9 @@ Atlas ensure_lightmap_uvs(const std::vector<MeshView>& meshes, const AtlasOption
 
 // Why a mesh's own TEXCOORD_1 cannot be used at a page of `resolution` texels, or "" when it can.
 std::string lightmap_uv_problem(const MeshView& mesh, int resolution);
+// The same for meshes sharing one width x height page: each must be valid, and no two charts, of
+// one mesh or of two, may share a texel. Problems of one mesh among several name it.
+std::string lightmap_uv_problem(const std::vector<const MeshView*>& meshes, int width, int height);
 
 // Measures any layout (generated, kept, or a peer's) over these meshes; `padding` is what the
 // layout promises. Chart ids come from the layout's triangle_chart.
