@@ -191,30 +191,32 @@ Atlas ensure_lightmap_uvs(const std::vector<MeshView>& meshes, const AtlasOption
   };
   const bool may_keep = options.input_uvs != InputUvPolicy::Generate;
   // Meshes the file lays out on one page (a re-bake of radbake's own output, or another baker's)
-  // are checked together at that page's size and keep sharing it: a page per mesh would leave each
-  // mostly empty, at the density of the whole.
+  // are checked together at that page's size and keep sharing it. When they cannot (their charts
+  // touch, or the page is larger than allowed), their UVs are generated: a page per mesh, the
+  // fallback below, would leave each page mostly empty, as each layout covers only its share.
+  std::vector<bool> decided(meshes.size(), false);
   std::map<int, std::vector<size_t>> on_input_page;
   for (size_t m = 0; m < meshes.size(); ++m)
     if (may_keep && meshes[m].lightmap_uvs && meshes[m].uv_page >= 0 && meshes[m].uv_page_width > 0 &&
-        meshes[m].uv_page_height > 0 && meshes[m].uv_page_width <= options.max_page_size &&
-        meshes[m].uv_page_height <= options.max_page_size)
+        meshes[m].uv_page_height > 0)
       on_input_page[meshes[m].uv_page].push_back(m);
   for (const auto& [input_page, group] : on_input_page) {
     std::vector<const MeshView*> views;
-    for (size_t m : group) views.push_back(&meshes[m]);
+    for (size_t m : group) views.push_back(&meshes[m]), decided[m] = true;
     const AtlasPage page{meshes[group[0]].uv_page_width, meshes[group[0]].uv_page_height};
-    bool same_size = true;
-    for (size_t m : group) same_size &= meshes[m].uv_page_width == page.width && meshes[m].uv_page_height == page.height;
-    std::string problem = same_size ? lightmap_uv_problem(views, page.width, page.height) : "the page has two sizes";
-    if (problem.empty() || options.input_uvs == InputUvPolicy::KeepAll) {
+    const std::string size = std::to_string(page.width) + "x" + std::to_string(page.height);
+    const bool too_large = page.width > options.max_page_size || page.height > options.max_page_size;
+    const std::string problem = too_large ? "the page is larger than " + std::to_string(options.max_page_size) + " texels"
+                                          : lightmap_uv_problem(views, page.width, page.height);
+    if (!too_large && (problem.empty() || options.input_uvs == InputUvPolicy::KeepAll)) {
       keep(group, page, problem);
-    } else if (group.size() > 1) {
-      atlas.warnings.push_back(std::to_string(group.size()) + " meshes laid out on one input lightmap page cannot share it (" +
-                               problem + "); each is checked on its own");
+      continue;
     }
+    atlas.warnings.push_back(std::to_string(group.size()) + (group.size() == 1 ? " mesh" : " meshes") + " laid out on one " +
+                             size + " input lightmap page: " + problem + "; generating lightmap UVs");
   }
   for (size_t m = 0; m < meshes.size(); ++m) {
-    if (!may_keep || !meshes[m].lightmap_uvs || !generate[m]) continue;
+    if (!may_keep || !meshes[m].lightmap_uvs || decided[m]) continue;
     int side = page_side_for_own_uvs(meshes[m], density, options.max_page_size);
     std::string problem = lightmap_uv_problem(meshes[m], side);
     if (problem.empty() || options.input_uvs == InputUvPolicy::KeepAll) {

@@ -74,6 +74,27 @@ TEST(Rebake, TheCornellBoxBakedFromItsOutputKeepsItsPageAndItsLight) {
   expect_same_bake(first, third);
 }
 
+TEST(Rebake, ASmallerPageThanTheOutputsGeneratesTheUvsAfreshOnOnePage) {
+  const std::string parent = test::fresh_folder("rebake_smaller");
+  const Bake first = bake(test::source_path("samples/cornell_box/cornell_box.gltf"), parent + "/first");
+  Outcome r = radbake("bake " + first.folder + "/cornell_box.gltf -o " + parent + "/small --quality draft --max-page-size 32 --quiet");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json report = nlohmann::json::parse(test::slurp(parent + "/small/report.json"));
+  ASSERT_EQ(report["atlas"]["pages"].size(), 1u);
+  EXPECT_EQ(report["atlas"]["pages"][0]["width"], 32);
+  EXPECT_EQ(report["atlas"]["meshes_with_kept_uvs"], 0);
+  EXPECT_NE(report["warnings"].dump().find("larger than 32 texels; generating lightmap UVs"), std::string::npos)
+      << report["warnings"];
+  // The new UVs go to TEXCOORD_1, where MOZ_lightmap reads them: the old lightmap's texCoord is
+  // not a texture set the material uses.
+  const nlohmann::json doc = nlohmann::json::parse(test::slurp(parent + "/small/cornell_box.gltf"));
+  for (const auto& mesh : doc["meshes"])
+    for (const auto& prim : mesh["primitives"]) {
+      EXPECT_FALSE(prim["attributes"].contains("TEXCOORD_2")) << mesh["name"];
+      EXPECT_EQ(doc["materials"][prim["material"].get<size_t>()]["extensions"]["MOZ_lightmap"]["texCoord"], 1);
+    }
+}
+
 TEST(Rebake, BackFacePrimitivesAreLeftOutAndMadeAgain) {
   // A one-face ceiling: double-sided, lit from below by the lamp and from above by the sun, so
   // its backs get texels of their own and the output a back-face primitive.

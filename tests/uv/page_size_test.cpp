@@ -1,6 +1,7 @@
 // Page sizes: generated pages are powers of two on each side by default, within the largest power
 // of two not above --max-page-size, filled by the automatic density rather than padded after it;
-// any_page_size gives the tight pages; a kept TEXCOORD_1 keeps its own page size.
+// any_page_size gives the tight pages; a kept TEXCOORD_1 keeps its own page size, and meshes the
+// file lays out on one page share it.
 #include <gtest/gtest.h>
 
 #include "io/gltf.h"
@@ -115,6 +116,58 @@ TEST(PageSize, KeptInputUvsKeepTheirOwnPageSize) {
   ASSERT_TRUE(atlas.meshes[0].kept_input_uvs);
   EXPECT_EQ(atlas.pages[0].width, 40);
   EXPECT_EQ(atlas.pages[0].height, 40);
+}
+
+// Two 1 m quads laid out side by side on one 64 x 32 input page (a re-bake of radbake's output, or
+// another baker's): `gap` texels between their charts.
+Scene two_quads_on_one_page(float gap) {
+  Scene scene;
+  for (int q = 0; q < 2; ++q) {
+    MeshInstance inst;
+    inst.name = "quad " + std::to_string(q);
+    const float x = float(q) * 2;
+    inst.positions = {{x, 0, 0}, {x + 1, 0, 0}, {x + 1, 1, 0}, {x, 1, 0}};
+    inst.triangles = {0, 1, 2, 0, 2, 3};
+    const float u0 = (2 + float(q) * (24 + gap)) / 64, u1 = u0 + 24.0f / 64;
+    inst.texcoords = {{}, {{u0, 4.0f / 32}, {u1, 4.0f / 32}, {u1, 28.0f / 32}, {u0, 28.0f / 32}}};
+    inst.lightmap_image = 0;
+    scene.instances.push_back(inst);
+  }
+  Image page;
+  page.width = 64, page.height = 32;
+  scene.images.push_back(page);
+  return scene;
+}
+
+TEST(PageSize, MeshesLaidOutOnOneInputPageKeepSharingItAtItsSize) {
+  const Scene scene = two_quads_on_one_page(4);
+  const Atlas atlas = test::unwrap(scene, AtlasOptions{});
+  ASSERT_EQ(atlas.pages.size(), 1u) << "a page per mesh";
+  EXPECT_EQ(atlas.pages[0].width, 64);
+  EXPECT_EQ(atlas.pages[0].height, 32);
+  for (const AtlasMesh& m : atlas.meshes) {
+    EXPECT_TRUE(m.kept_input_uvs);
+    EXPECT_EQ(m.page, 0);
+  }
+  EXPECT_TRUE(atlas.warnings.empty());
+}
+
+TEST(PageSize, MeshesThatCannotShareTheirInputPageGetGeneratedUvs) {
+  // Charts that overlap on the page, and a page larger than allowed: generated, one page (not a
+  // page per mesh, each mostly empty), with a warning.
+  const struct {
+    float gap;
+    int max_page_size;
+    const char* says;
+  } cases[] = {{-4, 1024, "overlap"}, {4, 32, "larger than 32"}};
+  for (const auto& c : cases) {
+    const Atlas atlas = test::unwrap(two_quads_on_one_page(c.gap), options(0, c.max_page_size));
+    EXPECT_EQ(atlas.pages.size(), 1u) << c.says;
+    for (const AtlasMesh& m : atlas.meshes) EXPECT_FALSE(m.kept_input_uvs) << c.says;
+    ASSERT_EQ(atlas.warnings.size(), 1u) << c.says;
+    EXPECT_NE(atlas.warnings[0].find(c.says), std::string::npos) << atlas.warnings[0];
+    EXPECT_NE(atlas.warnings[0].find("generating lightmap UVs"), std::string::npos) << atlas.warnings[0];
+  }
 }
 
 }  // namespace
