@@ -177,6 +177,7 @@ MeshInstance back_instance(const MeshInstance& front, int front_index, const std
   back.texcoords = front.texcoords;
   if (back.texcoords.size() > 1) back.texcoords[1].clear();
   back.colors = front.colors;
+  back.color_0_was_light = front.color_0_was_light;  // the same COLOR_0 in the file
   back.back_of = front_index;
   back.front_triangle = which;
   for (uint32_t t : which)

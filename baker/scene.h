@@ -79,6 +79,13 @@ struct MeshInstance {
   std::vector<Vec3> normals;    // world space, unit length; empty when the primitive has none
   std::vector<std::vector<Vec2>> texcoords;  // TEXCOORD_n at index n (empty sets for gaps)
   std::vector<Rgb> colors;       // COLOR_0 (multiplies the base colour); empty when absent
+  // COLOR_0 in the file is the light of an earlier radbake bake, not colours: `colors` came from
+  // its _SOURCE_COLOR_0 (or are none), and the writer replaces COLOR_0 instead of keeping it.
+  bool color_0_was_light = false;
+  // The lightmap page the file lays TEXCOORD_1 out on, when its material names one (MOZ_lightmap
+  // reading TEXCOORD_1): an index into Scene::images, whose size is the page's. Instances naming
+  // one page keep sharing it when their layouts allow (uv/atlas.h). -1: none.
+  int lightmap_image = -1;
   std::vector<uint32_t> triangles;  // three vertex indices per triangle (strips, fans expanded)
   // A back-face twin (baker/back_faces.h): the back of instance `back_of`'s double-sided triangles
   // front_triangle[t], as triangles of their own (same vertices, reversed winding, flipped normals)

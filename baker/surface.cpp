@@ -85,6 +85,11 @@ std::vector<MeshView> mesh_views(const Scene& scene) {
     v.triangle_count = inst.triangle_count();
     v.lightmap_uvs = inst.lightmap_uvs() ? inst.lightmap_uvs()->data() : nullptr;
     v.name = inst.name;
+    if (inst.lightmap_image >= 0 && size_t(inst.lightmap_image) < scene.images.size()) {
+      v.uv_page = inst.lightmap_image;
+      v.uv_page_width = scene.images[size_t(inst.lightmap_image)].width;
+      v.uv_page_height = scene.images[size_t(inst.lightmap_image)].height;
+    }
     views.push_back(v);
   }
   return views;

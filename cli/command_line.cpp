@@ -109,7 +109,10 @@ reading options (bake and uv):
 
 lightmap UV options (bake and uv):
   --density N             lightmap texels per metre (default: auto, the most that fits one page)
-  --max-page-size N       texels per page side, 16..16384 (default 1024)
+  --max-page-size N       texels per page side, 16..16384 (default 1024); generated pages are
+                          powers of two, at most the largest power of two not above N
+  --any-page-size         generated pages as tight as their charts (sides a multiple of 4, up to
+                          --max-page-size) instead of powers of two
   --padding N             empty texels between charts, 0..64 (default 2)
   --fit-page              with --density: lower it until everything fits one page (reported);
                           without, a scene too large for one page gets more pages
@@ -212,6 +215,7 @@ void atlas_options(AtlasOptions& a, std::map<std::string, Setter>& with_value, s
   with_value["--chart-angle"] = [&](const std::string& v) { a.max_chart_normal_deviation = float(parse_number("--chart-angle", v, 1, 89)); };
   flags["--no-rotate"] = [&] { a.rotate_charts = false; };
   flags["--fit-page"] = [&] { a.fit_one_page = true; };
+  flags["--any-page-size"] = [&] { a.any_page_size = true; };
 }
 
 // What a scene file may make radbake read and hold; `bake` and `uv` share them.
@@ -473,6 +477,7 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
       {"simulate-everything", b.bake.plan.simulate_everything ? "yes" : "no"},
       {"rotate-charts", b.atlas.rotate_charts ? "yes" : "no"},
       {"fit-page", b.atlas.fit_one_page ? "yes" : "no"},
+      {"any-page-size", b.atlas.any_page_size ? "yes" : "no"},
       {"lightmap-uvs", b.atlas.input_uvs == InputUvPolicy::KeepValid ? "keep-valid"
                        : b.atlas.input_uvs == InputUvPolicy::KeepAll ? "keep" : "generate"},
       {"chart-angle", number(b.atlas.max_chart_normal_deviation)},

@@ -4,6 +4,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 
 #include "baker/errors.h"
@@ -124,6 +125,7 @@ class SceneBuilder {
 
   void build() {
     check_required_extensions();
+    read_radbake_record();
     convert_images();
     convert_materials();
     visit_nodes();
@@ -133,6 +135,18 @@ class SceneBuilder {
     scene_.summary.textures = model_.textures.size();
     scene_.summary.lights = scene_.lights.size();
     for (const MeshInstance& inst : scene_.instances) scene_.summary.triangles += inst.triangle_count();
+    if (dropped_back_primitives_) {
+      // The earlier layout held the backs' charts beside the fronts'; kept for the fronts alone it
+      // would leave their space empty and put the new backs on a page of their own.
+      for (MeshInstance& inst : scene_.instances)
+        if (inst.lightmap_image >= 0) inst.lightmap_image = -1, inst.texcoords[1].clear();
+      scene_.warnings.push_back(std::to_string(dropped_back_primitives_) +
+                                " back-face primitives of the bake this file came from are left out (their fronts are "
+                                "double-sided again) and lightmap UVs are generated afresh");
+    }
+    if (colors_were_light_)
+      scene_.warnings.push_back("COLOR_0 holds the light of the bake this file came from (extras.radbake); it is not read "
+                                "as a base-colour multiplier (the file's own colours, if any, are in _SOURCE_COLOR_0)");
     if (scene_.summary.triangles == 0) refuse(file_, "/", "the scene has no triangles to bake");
   }
 
@@ -200,8 +214,18 @@ class SceneBuilder {
     const tinygltf::Mesh& mesh = model_.meshes[size_t(node.mesh)];
     if (node.skin >= 0)
       scene_.warnings.push_back("node " + describe_node(node_index) + " is skinned; it is baked in its node transform, not posed");
+    // A radbake output shows the backs of double-sided faces as primitives of their own: the earlier
+    // bake's output, not geometry. They are left out and their fronts made double-sided again, so
+    // baking the output gives what baking the original gave (baker/back_faces makes them anew).
+    std::set<size_t> fronts_with_backs;
+    for (const tinygltf::Primitive& prim : mesh.primitives)
+      if (back_faces_of(prim) >= 0) fronts_with_backs.insert(size_t(back_faces_of(prim)));
     for (size_t k = 0; k < mesh.primitives.size(); ++k) {
       const tinygltf::Primitive& prim = mesh.primitives[k];
+      if (back_faces_of(prim) >= 0) {
+        ++dropped_back_primitives_;
+        continue;
+      }
       ++scene_.summary.primitives;
       std::string where = "mesh '" + (mesh.name.empty() ? std::to_string(node.mesh) : clipped(mesh.name)) + "' primitive " + std::to_string(k);
       const std::string pointer = "/meshes/" + std::to_string(node.mesh) + "/primitives/" + std::to_string(k);
@@ -219,7 +243,7 @@ class SceneBuilder {
       inst.mesh = node.mesh;
       inst.primitive = int(k);
       inst.mirrored = world.determinant3() < 0;
-      inst.material = prim.material;
+      inst.material = fronts_with_backs.count(k) ? double_sided(prim.material) : prim.material;
 
       int components;
       std::vector<float> p = accessor_floats(model_, pos->second, &components);
@@ -234,7 +258,14 @@ class SceneBuilder {
       }
       read_normals(prim, world, inst, where);
       read_texcoords(prim, inst);
-      read_colors(prim, inst);
+      if (inst.lightmap_uvs()) inst.lightmap_image = lightmap_image(prim.material);
+      // A primitive radbake baked before holds that bake's light in COLOR_0 when the record says
+      // so; it is light, not a base-colour multiplier, and the input's own colours are in
+      // _SOURCE_COLOR_0 (or it had none). _BAKED_LIGHT, radbake's per-vertex light, is never read.
+      const bool baked_before = color_0_holds_light_ && lightmap_image(prim.material, false) >= 0;
+      read_colors(prim, inst, baked_before ? "_SOURCE_COLOR_0" : "COLOR_0");
+      inst.color_0_was_light = baked_before && prim.attributes.count("COLOR_0");
+      colors_were_light_ |= inst.color_0_was_light;
 
       std::vector<uint32_t> indices;
       if (prim.indices >= 0) {
@@ -298,14 +329,75 @@ class SceneBuilder {
     }
   }
 
-  void read_colors(const tinygltf::Primitive& prim, MeshInstance& inst) {
-    auto it = prim.attributes.find("COLOR_0");
+  void read_colors(const tinygltf::Primitive& prim, MeshInstance& inst, const std::string& attribute) {
+    auto it = prim.attributes.find(attribute);
     if (it == prim.attributes.end()) return;
     int components;
     std::vector<float> c = accessor_floats(model_, it->second, &components);
+    // The schema holds COLOR_n to VEC3 or VEC4; an application attribute (_SOURCE_COLOR_0) may be anything.
+    if (components != 3 && components != 4) {
+      scene_.warnings.push_back(inst.name + ": " + attribute + " is not RGB or RGBA; its colours are not read");
+      return;
+    }
     inst.colors.resize(inst.positions.size());
     for (size_t v = 0; v < inst.colors.size(); ++v)
       inst.colors[v] = {c[v * size_t(components)], c[v * size_t(components) + 1], c[v * size_t(components) + 2]};
+  }
+
+  // The root's extras.radbake (or asset.extras.radbake), written by radbake's writer: whether
+  // COLOR_0 of the primitives it baked holds light. `color_0_holds` says so ("source": the input's
+  // colours; "light" or "prelit": light); a file from before that field always held light there,
+  // and said so with color_0_intensity.
+  void read_radbake_record() {
+    for (const tinygltf::Value* extras : {&model_.extras, &model_.asset.extras}) {
+      if (!extras->IsObject() || !extras->Has("radbake")) continue;
+      const tinygltf::Value& record = extras->Get("radbake");
+      if (!record.IsObject() || !record.Has("generator") || !record.Get("generator").IsString() ||
+          record.Get("generator").Get<std::string>() != "radbake")
+        continue;
+      made_by_radbake_ = true;
+      const tinygltf::Value& holds = record.Get("color_0_holds");
+      color_0_holds_light_ = holds.IsString() ? holds.Get<std::string>() != "source" : record.Has("color_0_intensity");
+      return;
+    }
+  }
+
+  // The front primitive whose back faces `prim` is, when it is a back-face primitive radbake wrote
+  // (extras.radbake.back_faces_of_primitive in a radbake output); -1 otherwise.
+  int back_faces_of(const tinygltf::Primitive& prim) const {
+    if (!made_by_radbake_ || !prim.extras.IsObject() || !prim.extras.Has("radbake")) return -1;
+    const tinygltf::Value& record = prim.extras.Get("radbake");
+    if (!record.IsObject() || !record.Has("back_faces_of_primitive")) return -1;
+    const double front = number(record, "back_faces_of_primitive", -1);
+    return front >= 0 && front < 1e9 && front == std::floor(front) ? int(front) : -1;
+  }
+
+  // A copy of the material with doubleSided set, made once per material.
+  int double_sided(int material) {
+    auto [it, added] = double_sided_copy_.emplace(material, -1);
+    if (added) {
+      Material copy = material_of(scene_, material);
+      copy.double_sided = true;
+      scene_.materials.push_back(std::move(copy));
+      it->second = int(scene_.materials.size() - 1);
+    }
+    return it->second;
+  }
+
+  // The image a material's MOZ_lightmap texture shows, or -1: none, an index out of range, or (with
+  // `reading_set_1`) a lightmap read from another set than TEXCOORD_1. The extension is only copied,
+  // so nothing has checked its numbers before.
+  int lightmap_image(int material, bool reading_set_1 = true) const {
+    if (material < 0 || size_t(material) >= model_.materials.size()) return -1;
+    const auto& extensions = model_.materials[size_t(material)].extensions;
+    auto it = extensions.find("MOZ_lightmap");
+    if (it == extensions.end() || !it->second.IsObject()) return -1;
+    const tinygltf::Value& index = it->second.Get("index");
+    if (!index.IsNumber() || (reading_set_1 && number(it->second, "texCoord", 0) != 1)) return -1;
+    const double texture = index.GetNumberAsDouble();
+    if (!(texture >= 0 && texture < double(model_.textures.size())) || texture != std::floor(texture)) return -1;
+    const int source = model_.textures[size_t(texture)].source;
+    return source >= 0 && size_t(source) < model_.images.size() ? source : -1;
   }
 
   // check_document has checked the light's type and bounded its numbers.
@@ -427,6 +519,11 @@ class SceneBuilder {
   Scene& scene_;
   const std::string& file_;
   std::vector<char> usable_image_;
+  bool made_by_radbake_ = false;      // the file is a radbake output (extras.radbake)
+  bool color_0_holds_light_ = false;  // whose COLOR_0 holds light
+  size_t dropped_back_primitives_ = 0;
+  std::map<int, int> double_sided_copy_;  // material -> its double-sided copy in Scene::materials
+  bool colors_were_light_ = false;    // and a primitive's COLOR_0 was left unread for it
 };
 
 }  // namespace

@@ -33,6 +33,7 @@ bool is_data_uri(const std::string& uri) { return uri.rfind("data:", 0) == 0; }
 void collect_tex_coords(const json& node, std::vector<int>& sets) {
   if (node.is_object()) {
     for (auto it = node.begin(); it != node.end(); ++it) {
+      if (it.key() == "MOZ_lightmap") continue;  // an earlier bake's lightmap, which this bake replaces
       if (it.key() == "texCoord" && it.value().is_number_integer()) sets.push_back(it.value().get<int>());
       collect_tex_coords(it.value(), sets);
     }
@@ -259,6 +260,7 @@ class Writer {
     const AtlasMesh& lm = atlas_.meshes[i];
     const int mesh = mesh_for_node(inst.node, inst.mesh);
     const bool back = inst.back_of >= 0;
+    size_t back_at = 0;
     json& primitives = doc_["meshes"][size_t(mesh)]["primitives"];
     if (back) {
       // A primitive of its own beside its front's: the front's source attributes, its own indices
@@ -266,9 +268,22 @@ class Writer {
       json copy = original_meshes_[size_t(inst.mesh)]["primitives"][size_t(inst.primitive)];
       if (!copy["extras"].is_object()) copy["extras"] = json::object();
       copy["extras"]["radbake"] = {{"back_faces_of_primitive", inst.primitive}};
-      primitives.push_back(copy);
+      // Baking radbake's output again: the earlier back primitive (which the loader left out) is
+      // replaced rather than shown beside the new one.
+      back_at = primitives.size();
+      auto back_of = [](const json& p) {
+        const json& extras = p.contains("extras") ? p["extras"] : json();
+        const json& record = extras.is_object() && extras.contains("radbake") ? extras["radbake"] : json();
+        return record.is_object() && record.contains("back_faces_of_primitive") && record["back_faces_of_primitive"].is_number_integer()
+                   ? record["back_faces_of_primitive"].get<int64_t>()
+                   : int64_t(-1);
+      };
+      for (size_t k = 0; k < primitives.size(); ++k)
+        if (back_of(primitives[k]) == inst.primitive) back_at = k;
+      if (back_at == primitives.size()) primitives.push_back(copy);
+      else primitives[back_at] = copy;
     }
-    json& prim = primitives[back ? primitives.size() - 1 : size_t(inst.primitive)];
+    json& prim = primitives[back ? back_at : size_t(inst.primitive)];
     // A working copy: inserting keys into an ordered_json object moves its members, so no
     // reference into `prim` may be held while it grows.
     json attributes = prim["attributes"];
@@ -309,6 +324,15 @@ class Writer {
     // An earlier bake's light (re-baking our own output) is replaced, not kept beside the new.
     attributes["_BAKED_LIGHT"] = bin.add(as_bytes(light), vertex_count, "VEC3", TINYGLTF_COMPONENT_TYPE_FLOAT, false,
                                          kArrayBuffer, false);
+    if (inst.color_0_was_light) {
+      // An earlier radbake output whose COLOR_0 held light: the file's own colours are in _SOURCE_COLOR_0.
+      attributes.erase("COLOR_0");
+      if (attributes.contains("_SOURCE_COLOR_0")) {
+        json source_colors = attributes["_SOURCE_COLOR_0"];
+        attributes.erase("_SOURCE_COLOR_0");
+        attributes["COLOR_0"] = source_colors;
+      }
+    }
     if (options_.color_0 != Color0::Source) {
       if (attributes.contains("COLOR_0")) {
         json source_colors = attributes["COLOR_0"];
@@ -380,6 +404,7 @@ class Writer {
         {"png_intensity", lightmaps_.png_scale},
         {"baked_light", "_BAKED_LIGHT: linear RGB per vertex, the quantity in its unit"},
         {"color_0", color_0},
+        {"color_0_holds", options_.color_0 == Color0::Source ? "source" : options_.color_0 == Color0::Light ? "light" : "prelit"},
     };
     if (options_.color_0 == Color0::Light) info["color_0_intensity"] = color_scale_;
     if (options_.display_exposure > 0) {

@@ -48,6 +48,18 @@ double uv_area(const MeshView& mesh) {
   return area;
 }
 
+int largest_power_of_two_at_most(int v) {
+  int p = 1;
+  while (p <= v / 2) p *= 2;
+  return p;
+}
+
+int smallest_power_of_two_at_least(int v) {
+  int p = 1;
+  while (p < v) p *= 2;
+  return p;
+}
+
 // A kept TEXCOORD_1 layout gets a page of its own, square, sized so its texels match the density.
 int page_side_for_own_uvs(const MeshView& mesh, float density, int max_page_size) {
   double uv = uv_area(mesh);
@@ -156,23 +168,59 @@ Atlas ensure_lightmap_uvs(const std::vector<MeshView>& meshes, const AtlasOption
   Atlas atlas;
   atlas.meshes.resize(meshes.size());
   atlas.requested_density = options.texel_density;
-  const int page_size = options.max_page_size;
+  // Charts are packed into a page of this side, and each page is then trimmed to what it uses:
+  // to a power of two, or with any_page_size to a multiple of 4. The automatic density is the
+  // highest whose charts fit this page, so a power-of-two page is filled, not padded afterwards.
+  const int page_size = options.any_page_size ? options.max_page_size : largest_power_of_two_at_most(options.max_page_size);
   double total_area = 0;
   for (const MeshView& m : meshes) total_area += world_area(m);
   // A first guess for the automatic density: 70% of one page, what the packer usually reaches.
   const float guess = float(page_size * std::sqrt(0.7 / std::max(total_area, 1e-12)));
   float density = options.texel_density > 0 ? options.texel_density : guess;
 
-  std::vector<int> own_page_side(meshes.size(), 0);
+  // Kept TEXCOORD_1 layouts get pages of their own, after the generated ones: own_page[m] indexes
+  // kept_pages.
+  std::vector<int> own_page(meshes.size(), -1);
+  std::vector<AtlasPage> kept_pages;
   std::vector<bool> generate(meshes.size(), true);
+  auto keep = [&](const std::vector<size_t>& group, AtlasPage page, const std::string& problem) {
+    if (!problem.empty())
+      for (size_t m : group) atlas.warnings.push_back("mesh '" + meshes[m].name + "': " + problem + "; used anyway");
+    for (size_t m : group) own_page[m] = int(kept_pages.size()), generate[m] = false;
+    kept_pages.push_back(page);
+  };
+  const bool may_keep = options.input_uvs != InputUvPolicy::Generate;
+  // Meshes the file lays out on one page (a re-bake of radbake's own output, or another baker's)
+  // are checked together at that page's size and keep sharing it. When they cannot (their charts
+  // touch, or the page is larger than allowed), their UVs are generated: a page per mesh, the
+  // fallback below, would leave each page mostly empty, as each layout covers only its share.
+  std::vector<bool> decided(meshes.size(), false);
+  std::map<int, std::vector<size_t>> on_input_page;
+  for (size_t m = 0; m < meshes.size(); ++m)
+    if (may_keep && meshes[m].lightmap_uvs && meshes[m].uv_page >= 0 && meshes[m].uv_page_width > 0 &&
+        meshes[m].uv_page_height > 0)
+      on_input_page[meshes[m].uv_page].push_back(m);
+  for (const auto& [input_page, group] : on_input_page) {
+    std::vector<const MeshView*> views;
+    for (size_t m : group) views.push_back(&meshes[m]), decided[m] = true;
+    const AtlasPage page{meshes[group[0]].uv_page_width, meshes[group[0]].uv_page_height};
+    const std::string size = std::to_string(page.width) + "x" + std::to_string(page.height);
+    const bool too_large = page.width > options.max_page_size || page.height > options.max_page_size;
+    const std::string problem = too_large ? "the page is larger than " + std::to_string(options.max_page_size) + " texels"
+                                          : lightmap_uv_problem(views, page.width, page.height);
+    if (!too_large && (problem.empty() || options.input_uvs == InputUvPolicy::KeepAll)) {
+      keep(group, page, problem);
+      continue;
+    }
+    atlas.warnings.push_back(std::to_string(group.size()) + (group.size() == 1 ? " mesh" : " meshes") + " laid out on one " +
+                             size + " input lightmap page: " + problem + "; generating lightmap UVs");
+  }
   for (size_t m = 0; m < meshes.size(); ++m) {
-    if (!meshes[m].lightmap_uvs || options.input_uvs == InputUvPolicy::Generate) continue;
-    int side = page_side_for_own_uvs(meshes[m], density, page_size);
+    if (!may_keep || !meshes[m].lightmap_uvs || decided[m]) continue;
+    int side = page_side_for_own_uvs(meshes[m], density, options.max_page_size);
     std::string problem = lightmap_uv_problem(meshes[m], side);
     if (problem.empty() || options.input_uvs == InputUvPolicy::KeepAll) {
-      if (!problem.empty()) atlas.warnings.push_back("mesh '" + meshes[m].name + "': " + problem + "; used anyway");
-      own_page_side[m] = side;
-      generate[m] = false;
+      keep({m}, {side, side}, problem);
       continue;
     }
     atlas.warnings.push_back("mesh '" + meshes[m].name + "': " + problem + "; generating lightmap UVs");
@@ -217,6 +265,11 @@ Atlas ensure_lightmap_uvs(const std::vector<MeshView>& meshes, const AtlasOption
   }
   atlas.texel_density = density;
   atlas.pages = packed.pages;
+  // Trimming only takes empty texels off the top and right: charts keep their texel positions, and
+  // lay_out_charts divides by the final page size.
+  if (!options.any_page_size)
+    for (AtlasPage& p : atlas.pages)
+      p.width = smallest_power_of_two_at_least(p.width), p.height = smallest_power_of_two_at_least(p.height);
   for (uint32_t m : packed.downscaled_meshes)
     atlas.warnings.push_back("mesh '" + meshes[m].name + "' is too large for one " + std::to_string(page_size) +
                              "-texel page at " + std::to_string(density) + " texels/m and was scaled down");
@@ -227,16 +280,18 @@ Atlas ensure_lightmap_uvs(const std::vector<MeshView>& meshes, const AtlasOption
     charts_of[charts[c].mesh].push_back(&charts[c]);
     placements_of[charts[c].mesh].push_back(&packed.placements[c]);
   }
+  // Only degenerate triangles to generate for: they still need a page to point at.
+  if (atlas.pages.empty() && std::count(generate.begin(), generate.end(), true)) atlas.pages.push_back({16, 16});
+  const int first_kept_page = int(atlas.pages.size());
+  atlas.pages.insert(atlas.pages.end(), kept_pages.begin(), kept_pages.end());
   uint32_t next_chart = 0;
   for (size_t m = 0; m < meshes.size(); ++m) {
     progress.poll();
-    if (own_page_side[m]) {
-      atlas.pages.push_back({own_page_side[m], own_page_side[m]});
-      atlas.meshes[m] = keep_own_uvs(meshes[m], int(atlas.pages.size() - 1), next_chart);
+    if (own_page[m] >= 0) {
+      atlas.meshes[m] = keep_own_uvs(meshes[m], first_kept_page + own_page[m], next_chart);
       continue;
     }
     int page = placements_of[m].empty() ? 0 : placements_of[m][0]->page;
-    if (atlas.pages.empty()) atlas.pages.push_back({16, 16});  // only degenerate triangles
     atlas.meshes[m] = lay_out_charts(meshes[m], charts_of[m], placements_of[m], atlas.pages[size_t(page)], page, next_chart);
     next_chart += uint32_t(charts_of[m].size());
   }

@@ -19,6 +19,12 @@ struct MeshView {
   const uint32_t* triangles = nullptr;  // three indices per triangle
   size_t triangle_count = 0;
   const Vec2* lightmap_uvs = nullptr;  // the input's TEXCOORD_1, or null
+  // The input page those UVs were laid out on, when the file names one (a MOZ_lightmap texture, as
+  // radbake and other bakers write): meshes naming the same page are checked together and, when
+  // valid, keep sharing one page of its size. -1: none named; the mesh is checked, and gets a
+  // page, on its own.
+  int uv_page = -1;
+  int uv_page_width = 0, uv_page_height = 0;  // texels
   std::string name;                    // for messages
 };
 
@@ -30,13 +36,18 @@ enum class InputUvPolicy {
 
 struct AtlasOptions {
   float texel_density = 0;   // texels per metre; 0 picks the highest density that fits one page
-  int max_page_size = 1024;  // texels per page side, 16..16384
+  int max_page_size = 1024;  // texels per page side, 16..16384; generated pages stay within the
+                             // largest power of two at most this unless any_page_size
   int padding = 2;           // empty texels kept between charts (bilinear reads one, dilation fills)
   bool rotate_charts = true; // charts may turn (to their smallest rectangle, and by 90 degrees to pack)
   bool fit_one_page = false; // with a density given: lower it until everything fits one page
   InputUvPolicy input_uvs = InputUvPolicy::KeepValid;
   float max_chart_normal_deviation = 50;  // degrees: a chart's faces stay within this cone
   float hard_edge_angle = 40;             // degrees: edges folding more are always seams
+  // Generated pages are powers of two on each side by default, as engines and mipmapped samplers
+  // want (a side of 508 is padded or resampled by many of them); true gives the tight page instead,
+  // a multiple of 4 up to max_page_size. A kept TEXCOORD_1 keeps its own page size either way.
+  bool any_page_size = false;
   // Called with the stage "lightmap uvs" and the fraction done, at least every few tenths of a
   // second of work; returning false stops the unwrap, which throws Cancelled (baker/errors.h), as
   // a bake's callback stops a bake. A large mesh can take minutes to unwrap.
@@ -88,6 +99,9 @@ Atlas ensure_lightmap_uvs(const std::vector<MeshView>& meshes, const AtlasOption
 
 // Why a mesh's own TEXCOORD_1 cannot be used at a page of `resolution` texels, or "" when it can.
 std::string lightmap_uv_problem(const MeshView& mesh, int resolution);
+// The same for meshes sharing one width x height page: each must be valid, and no two charts, of
+// one mesh or of two, may share a texel. Problems of one mesh among several name it.
+std::string lightmap_uv_problem(const std::vector<const MeshView*>& meshes, int width, int height);
 
 // Measures any layout (generated, kept, or a peer's) over these meshes; `padding` is what the
 // layout promises. Chart ids come from the layout's triangle_chart.
