@@ -29,6 +29,52 @@ Rgb sample_bilinear(const LightmapPage& page, Vec2 texel) {
 
 namespace {
 
+// The pieces for_each_covered_texel (uv/texel_coverage.h) gives, but a texel wholly inside the
+// triangle is taken whole without clipping: most texels of a large triangle are, and refinement
+// measures every covered texel again at each level of splitting.
+template <typename Visit>
+void for_each_texel_piece(Vec2 a, Vec2 b, Vec2 c, int width, int height, Visit&& visit) {
+  const float min_x = std::min({a.x, b.x, c.x}), max_x = std::max({a.x, b.x, c.x});
+  const float min_y = std::min({a.y, b.y, c.y}), max_y = std::max({a.y, b.y, c.y});
+  if (!(min_x < max_x) || !(min_y < max_y)) return;  // degenerate or non-finite
+  const int x0 = std::max(0, int(std::floor(min_x))), x1 = std::min(width - 1, int(std::floor(max_x)));
+  const int y0 = std::max(0, int(std::floor(min_y))), y1 = std::min(height - 1, int(std::floor(max_y)));
+  // Edge functions, positive inside whatever the winding.
+  const double sign = cross2(b - a, c - a) > 0 ? 1.0 : -1.0;
+  const Vec2 tri[3] = {a, b, c};
+  double nx[3], ny[3], d[3];
+  for (int k = 0; k < 3; ++k) {
+    const Vec2 p = tri[k], q = tri[(k + 1) % 3];
+    nx[k] = -sign * (double(q.y) - p.y);
+    ny[k] = sign * (double(q.x) - p.x);
+    d[k] = -(nx[k] * p.x + ny[k] * p.y);
+  }
+  Vec2 tmp[8], out[8];
+  for (int y = y0; y <= y1; ++y)
+    for (int x = x0; x <= x1; ++x) {
+      bool whole = true, outside = false;
+      for (int k = 0; k < 3 && !outside; ++k) {
+        const double e00 = nx[k] * x + ny[k] * y + d[k];
+        const double e10 = e00 + nx[k], e01 = e00 + ny[k], e11 = e10 + ny[k];
+        if (e00 < 0 && e10 < 0 && e01 < 0 && e11 < 0) outside = true;
+        else if (e00 < 0 || e10 < 0 || e01 < 0 || e11 < 0) whole = false;
+      }
+      if (outside) continue;
+      if (whole) {
+        visit(TexelPiece{x, y, 1.0f, {x + 0.5f, y + 0.5f}});
+        continue;
+      }
+      int n = detail::clip_polygon(tri, 3, tmp, 0, float(x), 1.0f);
+      n = detail::clip_polygon(tmp, n, out, 0, float(x + 1), -1.0f);
+      n = detail::clip_polygon(out, n, tmp, 1, float(y), 1.0f);
+      n = detail::clip_polygon(tmp, n, out, 1, float(y + 1), -1.0f);
+      if (n < 3) continue;
+      Vec2 centroid{x + 0.5f, y + 0.5f};
+      const float area = std::fabs(detail::polygon_area_centroid(out, n, centroid));
+      if (area > 1e-7f) visit(TexelPiece{x, y, std::min(area, 1.0f), centroid});
+    }
+}
+
 // An edge by the welded ids of its ends (vertices at one position share an id), either order.
 uint64_t edge_key(uint32_t a, uint32_t b) {
   if (a > b) std::swap(a, b);
@@ -113,9 +159,10 @@ struct Refiner {
     const float world_area = 0.5f * length(cross(vertices[t.v[1]].position - pa, vertices[t.v[2]].position - pa));
     const double area_per_texel = double(world_area) / t.footprint;  // affine within a triangle
     const Rgb va = out.values[t.v[0]], vb = out.values[t.v[1]], vc = out.values[t.v[2]];
-    for_each_covered_texel(a, b, c, page->width, page->height, [&](const TexelPiece& p) {
+    for_each_texel_piece(a, b, c, page->width, page->height, [&](const TexelPiece& p) {
       const size_t index = size_t(p.y) * size_t(page->width) + size_t(p.x);
-      if (!page->valid[index]) return;  // buried or outside any chart: nobody sees it
+      // Buried or outside any chart: nobody sees it. A page without the mask counts every texel.
+      if (!page->valid.empty() && !page->valid[index]) return;
       // Interpolated at the piece's centroid, which lies inside the triangle.
       const float wb = cross2(p.centroid - a, c - a) / doubled, wc = cross2(b - a, p.centroid - a) / doubled;
       const Rgb interpolated = va * (1 - wb - wc) + vb * wb + vc * wc;

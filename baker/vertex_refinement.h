@@ -86,7 +86,9 @@ struct VertexRefinement {
 };
 
 // `vertex_values` are BakeResult::vertex_values (per instance, per atlas output vertex); `pages`
-// the bake's dilated pages in the same unit. Deterministic: same input, same output.
+// the bake's dilated pages in the same unit. Only texels marked `valid` are measured (a buried
+// texel under a block is seen by nobody); a page with an empty mask counts all of them.
+// Deterministic: same input, same output.
 VertexRefinement refine_vertex_light(const Scene& scene, const Atlas& atlas, const std::vector<LightmapPage>& pages,
                                      const std::vector<std::vector<Rgb>>& vertex_values,
                                      const RefinementOptions& options);
