@@ -3,12 +3,13 @@
 // triangles made, the relative RMS difference between vertex-interpolated light and the
 // lightmap, and the time refinement took (best of three).
 //
-//   refine_bench [SCENE.gltf] [--page N] [--tolerance T]
+//   refine_bench [SCENE.gltf] [--page N] [--tolerance T] [--budget N (only this one)]
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <string>
+#include <vector>
 
 #include "baker/back_faces.h"
 #include "baker/vertex_refinement.h"
@@ -20,9 +21,11 @@ int main(int argc, char** argv) {
   std::string path = test::source_path("samples/cornell_box/cornell_box.gltf");
   int page = 256;
   float tolerance = RefinementOptions{}.tolerance;
+  std::vector<size_t> budgets = {0, 500, 1000, 2000, 5000, 10000, 20000, 50000, 100000};
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--page") && i + 1 < argc) page = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--tolerance") && i + 1 < argc) tolerance = float(std::atof(argv[++i]));
+    else if (!std::strcmp(argv[i], "--budget") && i + 1 < argc) budgets = {size_t(std::atoll(argv[++i]))};
     else path = argv[i];
   }
   LoadedScene loaded = load_gltf(path);
@@ -37,8 +40,7 @@ int main(int argc, char** argv) {
     for (uint8_t v : p.valid) texels += v;
   std::printf("%s: page %d, %zu covered texels, tolerance %g\n\n", path.c_str(), page, texels, double(tolerance));
   std::printf("| budget | triangles | relative RMS | refinement ms |\n|---:|---:|---:|---:|\n");
-  for (size_t budget : {size_t(0), size_t(500), size_t(1000), size_t(2000), size_t(5000), size_t(10000), size_t(20000),
-                        size_t(50000), size_t(100000)}) {
+  for (size_t budget : budgets) {
     RefinementOptions options;
     options.max_triangles = budget;
     options.tolerance = tolerance;
@@ -51,7 +53,7 @@ int main(int argc, char** argv) {
     }
     std::printf("| %zu | %zu | %.4f | %.1f |\n", budget, r.curve.triangles.back(), r.curve.rms_relative.back(),
                 1e3 * best);
-    if (budget == 100000) {
+    if (budget == budgets.back()) {
       std::printf("\ncurve at budget %zu:\n", budget);
       for (size_t i = 0; i < r.curve.triangles.size(); ++i)
         std::printf("  %zu triangles: %.4f\n", r.curve.triangles[i], r.curve.rms_relative[i]);
