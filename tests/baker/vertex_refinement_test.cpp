@@ -4,10 +4,12 @@
 // draws the refinement to it.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <map>
 #include <set>
+#include <tuple>
 
 #include "baker/back_faces.h"
 #include "baker/vertex_refinement.h"
@@ -195,6 +197,7 @@ TEST_F(CornellRefinement, ShortBlocksShadowShowsInTheVertexLight) {
 }
 
 TEST_F(CornellRefinement, NoTJunctionsAndTheSameArea) {
+  size_t seam_vertices = 0;  // added vertices with a twin at their position across a seam or hard edge
   for (size_t m = 0; m < refined->meshes.size(); ++m) {
     const RefinedMesh& r = refined->meshes[m];
     const AtlasMesh& in = baked->atlas.meshes[m];
@@ -225,6 +228,12 @@ TEST_F(CornellRefinement, NoTJunctionsAndTheSameArea) {
       ASSERT_NE(found, input_edges.end());
       EXPECT_EQ(found->second, 1) << "instance " << m << ": an edge used once inside a chart";
     }
+    std::map<std::array<float, 3>, int> added_at;
+    for (size_t v = in.uvs.size(); v < r.vertices.size(); ++v) {
+      Vec3 p = position_of(*scene, baked->atlas, m, r.vertices[v]);
+      ++added_at[{p.x, p.y, p.z}];
+    }
+    for (const auto& [p, count] : added_at) seam_vertices += count > 1 ? size_t(count) : 0;
     // By position, across seams too: the open border keeps its length (a T-junction would add the
     // split edge's halves to the unsplit edge), and the area stays what the input covered.
     auto border_length_and_area = [&](const std::vector<uint32_t>& tris, auto position) {
@@ -257,6 +266,8 @@ TEST_F(CornellRefinement, NoTJunctionsAndTheSameArea) {
     EXPECT_NEAR(after.first, before.first, 1e-5 * before.first) << "instance " << m;
     EXPECT_NEAR(after.second, before.second, 1e-5 * before.second) << "instance " << m;
   }
+  RecordProperty("seam_vertices", std::to_string(seam_vertices));
+  EXPECT_GT(seam_vertices, 0u) << "no split crossed a seam: the test would not see a crack there";
 }
 
 TEST_F(CornellRefinement, BudgetIsRespected) {
