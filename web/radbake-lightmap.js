@@ -26,8 +26,16 @@
  *   E = srgb_to_linear(png) × intensity. three.js's light-map path shows a Lambertian surface as
  *   E × albedo / π (its luminance in cd/m2, for lux in), so multiplying by the exposure (display
  *   units per cd/m2) gives the same display value as the display file: luminance × exposure.
- *   (MeshStandardMaterial also takes a few percent off the diffuse lobe for its specular lobe,
- *   which a light map does not light; tests/web measures the difference against the display file.)
+ * - Lambertian light map (`options.lambert`, default true): radbake baked a Lambertian reflectance
+ *   ρ = baseColor × (1 − metallic), so the light a surface sends back is ρ × E, and the display
+ *   file shows ρ × E / π. three.js's MeshStandardMaterial hands light-map irradiance to its
+ *   diffuse lobe after taking off the specular lobe's share (1 − F_ss·E_ss − F_ms·E_ms: 2–5% on
+ *   the Cornell box at the test's view angles, more at grazing ones), and without an environment
+ *   map that specular share shows nowhere: the surfaces render a few percent darker than the bake
+ *   says. The plugin adds the light map's irradiance to the diffuse lobe as ρ × E / π instead
+ *   (onBeforeCompile on MeshStandardMaterial / MeshPhysicalMaterial; ambient occlusion maps
+ *   still apply); `lambert: false` keeps three.js's own split. If a three.js release renames what
+ *   the patch relies on, the plugin warns once and leaves the shader alone.
  *
  * Exposure, first found wins:
  * 1. `options.exposure` (display units per cd/m2);
@@ -37,6 +45,8 @@
  *    shows a white Lambertian surface under the page's full-scale irradiance (the PNG's 255) as
  *    display white.
  * `options.intensityScale` (default 1) multiplies the result, as a user's brightness slider.
+ *
+ * Options: { exposure?: number, intensityScale = 1, bakedLights = 'remove' | 'keep', lambert = true }.
  *
  * Baked lights: punctual lights (KHR_lights_punctual) whose definition carries
  * `extras.radbake.baked === true` are already in the lightmap; drawn again they would light the
@@ -51,7 +61,7 @@
  * @module radbake-lightmap
  */
 
-import { SRGBColorSpace } from 'three';
+import { ShaderChunk, SRGBColorSpace } from 'three';
 
 export const EXTENSION_NAME = 'MOZ_lightmap';
 
@@ -61,6 +71,35 @@ function radbakeExtras(json) {
   const asset = json.asset && json.asset.extras;
   if (asset && typeof asset === 'object' && asset.radbake) return asset.radbake;
   return null;
+}
+
+// What the Lambertian light-map patch needs from three.js's shader chunks (checked, not assumed).
+const LAMBERT_PATCHABLE = () =>
+  ShaderChunk.lights_fragment_maps.includes('irradiance += lightMapIrradiance;') &&
+  ShaderChunk.lights_physical_fragment.includes('material.diffuseContribution') &&
+  ShaderChunk.lights_fragment_end !== undefined;
+let warnedUnpatchable = false;
+
+function lambertLightMap(material) {
+  const previous = material.onBeforeCompile;
+  const previousKey = material.customProgramCacheKey;
+  material.onBeforeCompile = function (shader, renderer) {
+    if (previous) previous.call(this, shader, renderer);
+    shader.fragmentShader = shader.fragmentShader
+      .replace('#include <lights_fragment_maps>', `#include <lights_fragment_maps>
+#ifdef USE_LIGHTMAP
+	// radbake: the light map's light goes to the diffuse lobe as baked (Lambertian), below.
+	irradiance -= lightMapIrradiance;
+#endif`)
+      .replace('#include <lights_fragment_end>', `#include <lights_fragment_end>
+#ifdef USE_LIGHTMAP
+	reflectedLight.indirectDiffuse += lightMapIrradiance * BRDF_Lambert( material.diffuseContribution );
+#endif`);
+  };
+  material.customProgramCacheKey = function () {
+    return `radbake-lambert-lightmap;${previousKey.call(this)}`;
+  };
+  material.needsUpdate = true;
 }
 
 function positive(x) {
@@ -75,7 +114,8 @@ export class RadbakeLightmapPlugin {
   constructor(parser, options = {}) {
     this.name = EXTENSION_NAME;
     this.parser = parser;
-    this.options = { intensityScale: 1, bakedLights: 'remove', ...options };
+    this.options = { intensityScale: 1, bakedLights: 'remove', lambert: true, ...options };
+    this.lightmapMaterials = new Set(); // glTF material indices with MOZ_lightmap
     this.radbake = radbakeExtras(parser.json);
     this.removedLights = [];
   }
@@ -110,6 +150,7 @@ export class RadbakeLightmapPlugin {
     const def = this.parser.json.materials[materialIndex];
     const ext = def.extensions && def.extensions[EXTENSION_NAME];
     if (!ext || ext.index === undefined) return Promise.resolve();
+    this.lightmapMaterials.add(materialIndex);
     const intensity = ext.intensity !== undefined ? ext.intensity : 1;
     const exposure = this.exposureFor(intensity);
     this.exposureUsed = exposure;
@@ -124,6 +165,26 @@ export class RadbakeLightmapPlugin {
   }
 
   afterRoot(result) {
+    if (this.options.lambert && this.lightmapMaterials.size > 0) {
+      if (!LAMBERT_PATCHABLE()) {
+        if (!warnedUnpatchable) console.warn('radbake-lightmap: this three.js shades light maps differently; lambert option ignored');
+        warnedUnpatchable = true;
+      } else {
+        const done = new Set();
+        for (const scene of result.scenes || [result.scene]) {
+          scene.traverse((object) => {
+            if (!object.isMesh) return;
+            for (const material of [].concat(object.material)) {
+              const assoc = this.parser.associations.get(material);
+              if (done.has(material) || !material.isMeshStandardMaterial || !material.lightMap) continue;
+              if (!assoc || !this.lightmapMaterials.has(assoc.materials)) continue;
+              lambertLightMap(material);
+              done.add(material);
+            }
+          });
+        }
+      }
+    }
     result.userData = result.userData || {};
     result.userData.radbake = this.radbake;
     result.userData.radbakeExposure = this.exposureUsed || this.exposureFor(undefined);

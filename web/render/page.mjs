@@ -40,7 +40,7 @@ window.radbakeRender = async (o) => {
   const lights = [];
   const materials = new Map();
   scene.traverse((object) => {
-    if (object.isLight) lights.push({ name: object.name, type: object.type, intensity: object.intensity });
+    if (object.isLight) lights.push({ name: object.name, type: object.type, intensity: object.intensity, userData: object.userData });
     if (!object.isMesh) return;
     for (const material of [].concat(object.material)) {
       materials.set(material.uuid, {
