@@ -153,3 +153,44 @@ test('engine file through gltf-transform optimize with web/gltf-transform.config
   });
   assert.deepEqual(failures, []);
 });
+
+// What the README says about gltfpack and the engine file, checked so the text cannot drift:
+// gltfpack drops MOZ_lightmap whatever the flags (it writes only extensions it knows), and keeps
+// TEXCOORD_1 with -kv. Without -vtf an unreferenced UV set is quantized with no texture transform
+// to undo it (the UVs come out 16 times too small); -vtf stores floats, rounded to -vt bits
+// (12 by default: 1/4096, a texel of a 4096 page), so -vt 16. (-kv -noq keeps everything as float.)
+test('engine file through gltfpack -kv -vtf -vt 16: TEXCOORD_1 kept (the same UVs), MOZ_lightmap dropped', async () => {
+  const { NodeIO } = await import('../../web/node_modules/@gltf-transform/core/dist/index.js');
+  const { ALL_EXTENSIONS } = await import('../../web/node_modules/@gltf-transform/extensions/dist/index.js');
+  const out = path.join(work, 'engine_gltfpack.glb');
+  run('gltfpack', ['-i', engine, '-o', out, '-kv', '-vtf', '-vt', '16']);
+  const io = new NodeIO().registerExtensions(ALL_EXTENSIONS);
+  const vertices = async (file) => {
+    const doc = await io.read(file);
+    const list = [];
+    for (const node of doc.getRoot().listNodes()) {
+      if (!node.getMesh()) continue;
+      const m = node.getWorldMatrix();
+      for (const p of node.getMesh().listPrimitives()) {
+        const pos = p.getAttribute('POSITION'), uv = p.getAttribute('TEXCOORD_1');
+        assert.ok(uv, `a primitive of ${node.getName() || 'a node'} in ${path.basename(file)} has no TEXCOORD_1`);
+        assert.equal(uv.getNormalized(), false, 'TEXCOORD_1 stays float');
+        for (let i = 0; i < pos.getCount(); i++) {
+          const [x, y, z] = pos.getElement(i, []);
+          const w = [0, 1, 2].map((r) => m[r] * x + m[4 + r] * y + m[8 + r] * z + m[12 + r]);
+          list.push({ w, uv: uv.getElement(i, []) });
+        }
+      }
+    }
+    return { doc, list };
+  };
+  const original = await vertices(engine);
+  const packed = await vertices(out);
+  assert.ok(packed.doc.getRoot().listMaterials().every((m) => !m.getExtension('MOZ_lightmap')), 'gltfpack kept MOZ_lightmap: update the README');
+  for (const v of packed.list) {
+    // 14-bit positions over the 0.56 m box: 0.1 mm; some original vertex at that place has this UV.
+    const same = original.list.filter((o) => Math.hypot(...o.w.map((c, i) => c - v.w[i])) < 2e-4);
+    assert.ok(same.some((o) => Math.abs(o.uv[0] - v.uv[0]) < 1e-5 && Math.abs(o.uv[1] - v.uv[1]) < 1e-5),
+      `vertex at ${v.w.map((c) => c.toFixed(4))} has TEXCOORD_1 ${v.uv} that no original vertex there has`);
+  }
+});
