@@ -29,8 +29,8 @@
  * - Lambertian light map (`options.lambert`, default true): radbake baked a Lambertian reflectance
  *   ρ = baseColor × (1 − metallic), so the light a surface sends back is ρ × E, and the display
  *   file shows ρ × E / π. three.js's MeshStandardMaterial hands light-map irradiance to its
- *   diffuse lobe after taking off the specular lobe's share (1 − F_ss·E_ss − F_ms·E_ms: 2–5% on
- *   the Cornell box at the test's view angles, more at grazing ones), and without an environment
+ *   diffuse lobe after taking off the specular lobe's share (1 − F_ss·E_ss − F_ms·E_ms: 1–5% on
+ *   the Cornell box at the test's view angles, more at grazing ones; tests/web/plugin.test.mjs), and without an environment
  *   map that specular share shows nowhere: the surfaces render a few percent darker than the bake
  *   says. The plugin adds the light map's irradiance to the diffuse lobe as ρ × E / π instead
  *   (onBeforeCompile on MeshStandardMaterial / MeshPhysicalMaterial; ambient occlusion maps

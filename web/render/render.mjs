@@ -163,10 +163,16 @@ export async function openRenderer({ executablePath = CHROMIUM_PATH, args = [] }
     sink = { errors: [], warnings: [] };
     const { errors: consoleErrors, warnings: consoleWarnings } = sink;
     try {
-      const result = await page.evaluate((opts) => window.radbakeRender(opts), {
-        url, mode: o.mode ?? 'stock', camera: o.camera, width, height, points: o.points || [],
-        pluginOptions: o.pluginOptions, mipmaps: o.mipmaps, meshopt: !!o.meshopt, antialias: !!o.antialias,
-      });
+      // page.evaluate has no time limit of its own: a loader that never settles would hang the caller.
+      const timeoutMs = o.timeoutMs ?? 60000;
+      let timer;
+      const result = await Promise.race([
+        page.evaluate((opts) => window.radbakeRender(opts), {
+          url, mode: o.mode ?? 'stock', camera: o.camera, width, height, points: o.points || [],
+          pluginOptions: o.pluginOptions, mipmaps: o.mipmaps, meshopt: !!o.meshopt, antialias: !!o.antialias,
+        }),
+        new Promise((_, reject) => { timer = setTimeout(() => reject(new Error(`render of ${o.file} took over ${timeoutMs} ms`)), timeoutMs); }),
+      ]).finally(() => clearTimeout(timer));
       const image = { width, height, rgba: new Uint8Array(Buffer.from(result.rgba, 'base64')) };
       if (o.out) await writeFile(o.out, encodePng(width, height, image.rgba));
       const points = (o.points || []).map(([x, y], i) => ({
