@@ -4,23 +4,12 @@
 #include <cmath>
 
 #include "baker/material_sampler.h"
+#include "baker/vertex_refinement.h"
 
 namespace radbake {
 namespace {
 
 constexpr float kPi = 3.14159265358979323846f;
-
-// The lightmap read as a GPU reads it: bilinear between texel centres, edges clamped. Pages are
-// dilated, so every texel read holds light of the nearest chart.
-Rgb bilinear(const LightmapPage& page, float x, float y) {
-  const float fx = std::clamp(x - 0.5f, 0.0f, float(page.width - 1));
-  const float fy = std::clamp(y - 0.5f, 0.0f, float(page.height - 1));
-  const int x0 = int(fx), y0 = int(fy);
-  const int x1 = std::min(x0 + 1, page.width - 1), y1 = std::min(y0 + 1, page.height - 1);
-  const float tx = fx - float(x0), ty = fy - float(y0);
-  auto at = [&](int xi, int yi) { return page.texels[size_t(yi) * size_t(page.width) + size_t(xi)]; };
-  return (at(x0, y0) * (1 - tx) + at(x1, y0) * tx) * (1 - ty) + (at(x0, y1) * (1 - tx) + at(x1, y1) * tx) * ty;
-}
 
 // Texture texels per lightmap texel along a side, for the triangle's base colour texture.
 float texture_texels_per_lightmap_texel(const Scene& scene, const Surface& surface, uint32_t t) {
@@ -103,7 +92,8 @@ PrelitPages prelit_pages(const Scene& scene, const Surface& surface, const std::
         const float b0 = 1 - b1 - b2;
         if (b0 < 0 || b1 < 0 || b2 < 0) continue;  // centre outside: dilation fills it from its chart
         const Vec2 bary{b1, b2};
-        const Rgb value = bilinear(light, q.x / float(n), q.y / float(n));
+        // Pages are dilated, so every texel read holds light of the nearest chart.
+        const Rgb value = sample_bilinear(light, q * (1.0f / float(n)));
         const Rgb emitted = materials.emission(t, bary, spacing);
         const Rgb seen = options.lightmap_is_irradiance ? materials.reflectance(t, bary, spacing) * value + emitted : value;
         const size_t i = size_t(y) * size_t(page.width) + size_t(x);

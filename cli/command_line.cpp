@@ -153,6 +153,10 @@ bake options:
   --display-detail N|auto pre-lit texels per lightmap texel along a side, 1, 2 or 4, so base
                           colour textures keep their detail (default auto: what the textures
                           hold, up to 4, pages up to 4096)
+  --vertex-refine N       with --display vertex: split triangles where the baked light varies
+                          (shadow edges, gradients) up to N triangles in all, so vertex light
+                          keeps the shadows; report.json gives the RMS difference from the
+                          lightmap against triangle count (default 0: the mesh as it is)
   --exposure X|auto       display value per cd/m2 for the display file and the three.js plugin
                           (default auto: the log-mean luminance shows at --key)
   --key X                 display value (linear, 0..1) of the log-mean luminance (default 0.18)
@@ -399,6 +403,7 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
          else throw UsageError("option --display-detail must be 1, 2, 4 or auto" + got(v));
        }},
       {"--exposure", [&](const std::string& v) { b.exposure.exposure = v == "auto" ? 0.0f : float(parse_number("--exposure", v, 1e-30, 1e30)); }},
+      {"--vertex-refine", [&](const std::string& v) { b.vertex_refine_triangles = size_t(parse_integer("--vertex-refine", v, 0, 100000000)); }},
       {"--key", [&](const std::string& v) { b.exposure.key = float(parse_number("--key", v, 1e-6, 1)); }},
       {"--color-0", [&](const std::string& v) {
          if (v == "source") b.color_0 = Color0::Source;
@@ -470,6 +475,7 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
       {"display-detail", b.display_detail > 0 ? number(b.display_detail) : "auto"},
       {"exposure", b.exposure.exposure > 0 ? number(b.exposure.exposure) : "auto"},
       {"key", number(b.exposure.key)},
+      {"vertex-refine", number(double(b.vertex_refine_triangles))},
       {"color-0", b.color_0 == Color0::Source ? "source" : b.color_0 == Color0::Light ? "light" : "prelit"},
       {"emission-scale", number(b.bake.emission_scale)},
       {"ambient", b.bake.solve.ambient_term ? "yes" : "no"},

@@ -35,6 +35,7 @@ struct BakeCommand {
   int display_detail = 0;      // pre-lit texels per lightmap texel along a side (1, 2, 4); 0: automatic
   ExposureOptions exposure;    // display units per cd/m2; automatic by default
   Color0 color_0 = Color0::Source;
+  size_t vertex_refine_triangles = 0;  // --display vertex: refine the mesh up to this many triangles; 0: as it is
   bool quiet = false;
   bool debug_dumps = false;
   std::vector<std::pair<std::string, std::string>> effective;  // every option and its value, for the report

@@ -83,7 +83,14 @@ radbake::DisplaySummary write_display(const radbake::BakeCommand& cmd, const rad
   summary.exposure_automatic = exposure.automatic;
   summary.log_mean_luminance = exposure.log_mean_luminance;
   if (cmd.display == DisplayMode::None) return summary;
-  const std::vector<DisplayMesh> meshes = atlas_display_meshes(atlas, result.vertex_values);
+  // Refined only for vertex light (the pages carry the shadows otherwise); unrefined, the atlas's meshes.
+  RefinementOptions refinement;
+  if (cmd.display == DisplayMode::Vertex) refinement.max_triangles = cmd.vertex_refine_triangles;
+  const VertexRefinement refined = refine_vertex_light(scene, atlas, result.pages, result.vertex_values, refinement);
+  const std::vector<RefinedMesh>& meshes = refined.meshes;
+  if (cmd.display == DisplayMode::Vertex)
+    for (size_t k = 0; k < refined.curve.triangles.size(); ++k)
+      summary.refinement.push_back({refined.curve.triangles[k], refined.curve.rms_relative[k]});
   DisplayInput input;
   input.scene = &scene;
   input.atlas = &atlas;

@@ -25,12 +25,10 @@ Vec2 transformed(const TextureTransform& t, Vec2 uv) {
   return {c * s.x - r * s.y + t.offset.x, r * s.x + c * s.y + t.offset.y};
 }
 
+// An input vertex attribute at a display vertex.
 template <typename T>
-T blend(const std::vector<T>& per_vertex, const std::vector<uint32_t>& source_vertex, const BlendedVertex& v) {
-  T out{};
-  for (int k = 0; k < 3; ++k)
-    if (v.weight[k] != 0) out = out + per_vertex[source_vertex[v.corner[k]]] * v.weight[k];
-  return out;
+T blend(const std::vector<T>& per_vertex, const std::vector<uint32_t>& source_vertex, const RefinedVertex& v) {
+  return blend<T>(v, [&](uint32_t atlas_vertex) { return per_vertex[source_vertex[atlas_vertex]]; });
 }
 
 class DisplayWriter {
@@ -152,10 +150,10 @@ class DisplayWriter {
   void add_instance(size_t i) {
     const MeshInstance& inst = in_.scene->instances[i];
     const AtlasMesh& lm = in_.atlas->meshes[i];
-    const DisplayMesh& mesh = (*in_.meshes)[i];
+    const RefinedMesh& mesh = (*in_.meshes)[i];
     const size_t n = mesh.vertices.size();
     std::vector<float> positions, normals, uvs, colors;
-    for (const BlendedVertex& v : mesh.vertices) {
+    for (const RefinedVertex& v : mesh.vertices) {
       const Vec3 p = blend(inst.positions, lm.source_vertex, v);
       positions.insert(positions.end(), {p.x, p.y, p.z});
       if (!inst.normals.empty()) {
@@ -167,9 +165,8 @@ class DisplayWriter {
     if (!normals.empty()) attributes["NORMAL"] = bin_.add(as_bytes(normals), n, "VEC3", kFloat, false, kArrayBuffer, false);
     int material;
     if (!in_.vertex_lit) {
-      for (const BlendedVertex& v : mesh.vertices) {
-        Vec2 uv{};
-        for (int k = 0; k < 3; ++k) uv = uv + lm.uvs[v.corner[k]] * v.weight[k];
+      for (const RefinedVertex& v : mesh.vertices) {
+        const Vec2 uv = blend<Vec2>(v, [&](uint32_t atlas_vertex) { return lm.uvs[atlas_vertex]; });
         uvs.insert(uvs.end(), {uv.x, uv.y});
       }
       material = page_material(lm.page, double_sided(i));
@@ -184,12 +181,12 @@ class DisplayWriter {
       const Rgb emitted = source.emits() ? source.emissive * (source.emissive_strength * in_.emission_scale) : Rgb{};
       const bool textured = reflects && set;
       for (size_t k = 0; k < n; ++k) {
-        const BlendedVertex& v = mesh.vertices[k];
+        const RefinedVertex& v = mesh.vertices[k];
         if (textured) {
           const Vec2 uv = transformed(ref.transform, blend(*set, lm.source_vertex, v));
           uvs.insert(uvs.end(), {uv.x, uv.y});
         }
-        Rgb seen = prelit_vertex(mesh.light[k]);
+        Rgb seen = prelit_vertex(mesh.values[k]);
         if (!reflects && in_.lightmap_is_irradiance) seen = seen * (source.base_color * (1 - source.metallic)) + emitted;
         for (int c = 0; c < 3; ++c) colors.push_back(std::clamp(seen[c] * in_.exposure.exposure, 0.0f, 1.0f));
       }
@@ -255,18 +252,6 @@ class DisplayWriter {
 };
 
 }  // namespace
-
-std::vector<DisplayMesh> atlas_display_meshes(const Atlas& atlas, const std::vector<std::vector<Rgb>>& vertex_values) {
-  std::vector<DisplayMesh> out(atlas.meshes.size());
-  for (size_t m = 0; m < atlas.meshes.size(); ++m) {
-    const size_t n = atlas.meshes[m].uvs.size();
-    out[m].vertices.resize(n);
-    for (size_t v = 0; v < n; ++v) out[m].vertices[v].corner[0] = uint32_t(v);
-    out[m].triangles = atlas.meshes[m].triangles;
-    out[m].light = vertex_values[m];
-  }
-  return out;
-}
 
 DisplayOutput write_display_gltf(const DisplayInput& input, const std::string& folder, const std::string& name) {
   return DisplayWriter(input).write(folder, name);

@@ -11,32 +11,16 @@
 #include "baker/exposure.h"
 #include "baker/prelit_pages.h"
 #include "baker/scene.h"
+#include "baker/vertex_refinement.h"
 #include "uv/atlas.h"
 
 namespace radbake {
-
-// One vertex of a display mesh: a blend of up to three atlas output vertices of one triangle
-// (weights sum to 1), so every attribute is interpolated the same way.
-struct BlendedVertex {
-  uint32_t corner[3] = {0, 0, 0};
-  float weight[3] = {1, 0, 0};
-};
-
-// A display mesh per instance; its vertices blend the instance's atlas vertices.
-struct DisplayMesh {
-  std::vector<BlendedVertex> vertices;
-  std::vector<uint32_t> triangles;  // three per triangle, the atlas mesh's winding
-  std::vector<Rgb> light;           // vertex_lit only: per vertex, the stored quantity (lux or lm/m2)
-};
-
-// The atlas's own meshes, with the vertex light per atlas output vertex.
-std::vector<DisplayMesh> atlas_display_meshes(const Atlas& atlas, const std::vector<std::vector<Rgb>>& vertex_values);
 
 struct DisplayInput {
   const Scene* scene = nullptr;
   const Atlas* atlas = nullptr;
   const PrelitPages* pages = nullptr;       // page-lit: the pre-lit pages (cd/m2)
-  const std::vector<DisplayMesh>* meshes = nullptr;  // per instance
+  const std::vector<RefinedMesh>* meshes = nullptr;  // per instance; vertex values in the stored quantity
   bool vertex_lit = false;
   bool lightmap_is_irradiance = true;
   float emission_scale = 1;

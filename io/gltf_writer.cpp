@@ -74,9 +74,9 @@ class Writer {
     out_.written_files.push_back(bin_name);
     add_extension_used("MOZ_lightmap");
     mark_baked_lights();
-    describe_bake();
     prune_unused_objects(doc_, out_.warnings);
     remove_unreferenced_files();
+    describe_bake();  // after pruning, which renumbers the page textures
     out_.gltf_file = name_ + ".gltf";
     std::ofstream file(folder_ / out_.gltf_file);
     file << doc_.dump(2) << "\n";
@@ -372,6 +372,14 @@ class Writer {
     out_.written_files = kept;
   }
 
+  int texture_of_png(const std::string& png) const {
+    for (size_t t = 0; t < doc_["textures"].size(); ++t) {
+      const json& texture = doc_["textures"][t];
+      if (texture.contains("source") && doc_["images"][texture["source"].get<size_t>()].value("uri", "") == png) return int(t);
+    }
+    return -1;
+  }
+
   // Engines light the scene with its punctual lights; the ones radbake baked are in the lightmap
   // already, so an engine (or the three.js plugin) that adds them again lights the scene twice.
   void mark_baked_lights() {
@@ -390,7 +398,7 @@ class Writer {
   void describe_bake() {
     json pages = json::array();
     for (size_t p = 0; p < lightmaps_.png.size(); ++p)
-      pages.push_back({{"png", lightmaps_.png[p]}, {"exr", lightmaps_.exr[p]}, {"texture", page_texture_[p]}});
+      pages.push_back({{"png", lightmaps_.png[p]}, {"exr", lightmaps_.exr[p]}, {"texture", texture_of_png(lightmaps_.png[p])}});
     const char* color_0 = options_.color_0 == Color0::Source ? "the input's own COLOR_0 (a base colour multiplier)"
                           : options_.color_0 == Color0::Light ? "linear RGB per vertex; quantity = COLOR_0 * color_0_intensity"
                                                               : "pre-lit display colour of a white surface: clip(quantity / pi * display_exposure), linear";

@@ -40,7 +40,6 @@ class BakedScene:
         self.exr_pages = [os.path.join(folder, p["exr"]) for p in info["pages"]]
         self.page_of_texture = {p["texture"]: i for i, p in enumerate(info["pages"])}
         self.png_intensity = float(info["png_intensity"])
-        self.color_intensity = float(info["color_0_intensity"])
 
     def _buffer(self, index):
         if index not in self.buffers:
@@ -66,7 +65,7 @@ class BakedScene:
             return []
         out = []
         for prim in self.doc["meshes"][node["mesh"]]["primitives"]:
-            if prim.get("mode", 4) != 4 or "COLOR_0" not in prim["attributes"]:
+            if prim.get("mode", 4) != 4 or "_BAKED_LIGHT" not in prim["attributes"]:
                 continue
             # A double-sided face's back, baked apart: a Blender face has one UV and colour per
             # corner, so the add-on brings back the fronts' light.
@@ -78,7 +77,7 @@ class BakedScene:
             corners = self.accessor(prim["indices"]).reshape(-1) if "indices" in prim else None
             positions = self.accessor(prim["attributes"]["POSITION"])
             uvs = self.accessor(prim["attributes"][uv_set])
-            colors = self.accessor(prim["attributes"]["COLOR_0"]) * self.color_intensity
+            colors = self.accessor(prim["attributes"]["_BAKED_LIGHT"])  # lux, linear
             if corners is not None:
                 positions, uvs, colors = positions[corners], uvs[corners], colors[corners]
             out.append((positions, uvs, colors, self.page_of_texture[lightmap["index"]]))

@@ -1,6 +1,7 @@
 // Writing the baked glTF: the input kept whole, lightmap UVs, COLOR_0 and MOZ_lightmap added,
 // instanced meshes split per node, the input's own TEXCOORD_1 kept, a double-sided face's back
 // as a primitive of its own; the output loads back.
+#include <cstring>
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -8,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "io/gltf.h"
+#include "io/gltf_source.h"
 #include "io/lightmap_images.h"
 #include "support/commands.h"
 #include "support/scene_builders.h"
@@ -55,7 +57,9 @@ TEST(GltfWriter, CornellBoxOutputKeepsTheSceneAndAddsTheBake) {
   for (const json& mesh : doc["meshes"])
     for (const json& prim : mesh["primitives"]) {
       ASSERT_TRUE(prim["attributes"].contains("TEXCOORD_1")) << mesh["name"];
-      ASSERT_TRUE(prim["attributes"].contains("COLOR_0")) << mesh["name"];
+      // The baked light is application data; COLOR_0, a base colour multiplier, is the input's (none here).
+      ASSERT_TRUE(prim["attributes"].contains("_BAKED_LIGHT")) << mesh["name"];
+      EXPECT_FALSE(prim["attributes"].contains("COLOR_0")) << mesh["name"];
       const json& material = doc["materials"][prim["material"].get<size_t>()];
       const json& lightmap = material["extensions"]["MOZ_lightmap"];
       EXPECT_EQ(lightmap["texCoord"], 1);
@@ -71,25 +75,29 @@ TEST(GltfWriter, CornellBoxOutputKeepsTheSceneAndAddsTheBake) {
     EXPECT_GT(exr.width, 0);
   }
 
-  // It loads back: same instances, each with lightmap UVs and baked colours in [0, 1].
+  // It loads back: same instances, each with lightmap UVs, and no baked light read as base colour
+  // even without radbake's record.
   LoadedScene back = load_without_record(out);
   LoadedScene original = load_gltf(input);
   ASSERT_EQ(back.scene.instances.size(), original.scene.instances.size());
   for (const MeshInstance& inst : back.scene.instances) {
     ASSERT_NE(inst.lightmap_uvs(), nullptr) << inst.name;
-    ASSERT_EQ(inst.colors.size(), inst.positions.size()) << inst.name;
-    for (Rgb c : inst.colors) {
-      EXPECT_GE(std::min({c.x, c.y, c.z}), 0.0f);
-      EXPECT_LE(std::max({c.x, c.y, c.z}), 1.0f);
-    }
+    EXPECT_TRUE(inst.colors.empty()) << inst.name;
   }
   EXPECT_EQ(back.scene.lights.size(), original.scene.lights.size());
 }
 
-double mean_colour(const MeshInstance& inst) {
+// Mean of a float VEC3 attribute of the first primitive of `mesh`, read through tinygltf.
+double mean_attribute(const LoadedScene& loaded, int mesh, const std::string& attribute) {
+  const tinygltf::Model& model = loaded.source->model;
+  size_t element_size;
+  std::vector<uint8_t> bytes =
+      accessor_bytes(model, model.meshes[size_t(mesh)].primitives[0].attributes.at(attribute), &element_size);
+  std::vector<float> values(bytes.size() / 4);
+  std::memcpy(values.data(), bytes.data(), values.size() * 4);
   double sum = 0;
-  for (Rgb c : inst.colors) sum += c.x + c.y + c.z;
-  return sum / (3.0 * double(inst.colors.size()));
+  for (float v : values) sum += v;
+  return sum / double(values.size());
 }
 
 TEST(GltfWriter, AnInstancedMeshGetsACopyAndALightingPerNode) {
@@ -108,16 +116,11 @@ TEST(GltfWriter, AnInstancedMeshGetsACopyAndALightingPerNode) {
   const json& a = doc["meshes"][size_t(near_mesh)]["primitives"][0]["attributes"];
   const json& b = doc["meshes"][size_t(corner_mesh)]["primitives"][0]["attributes"];
   EXPECT_NE(a["TEXCOORD_1"], b["TEXCOORD_1"]);  // their own places in the atlas
-  EXPECT_NE(a["COLOR_0"], b["COLOR_0"]);
+  EXPECT_NE(a["_BAKED_LIGHT"], b["_BAKED_LIGHT"]);
 
-  LoadedScene back = load_without_record(out);
-  const MeshInstance *near = nullptr, *corner = nullptr;
-  for (const MeshInstance& inst : back.scene.instances) {
-    if (inst.name.rfind("block_near_lamp", 0) == 0) near = &inst;
-    if (inst.name.rfind("block_in_corner", 0) == 0) corner = &inst;
-  }
-  ASSERT_TRUE(near && corner);
-  EXPECT_GT(mean_colour(*near), 2 * mean_colour(*corner));  // the one by the lamp is brighter
+  LoadedScene back = load_gltf(out);
+  // the one by the lamp is brighter
+  EXPECT_GT(mean_attribute(back, near_mesh, "_BAKED_LIGHT"), 2 * mean_attribute(back, corner_mesh, "_BAKED_LIGHT"));
 }
 
 TEST(GltfWriter, TheInputsOwnLightmapUvsAreKept) {
