@@ -263,7 +263,7 @@ class SceneBuilder {
       // so; it is light, not a base-colour multiplier, and the input's own colours are in
       // _SOURCE_COLOR_0 (or it had none). _BAKED_LIGHT, radbake's per-vertex light, is never read.
       const bool baked_before = color_0_holds_light_ && lightmap_image(prim.material, false) >= 0;
-      read_colors(prim, inst, baked_before ? "_SOURCE_COLOR_0" : "COLOR_0");
+      read_colors(prim, inst, baked_before ? "_SOURCE_COLOR_0" : "COLOR_0", pointer);
       inst.color_0_was_light = baked_before && prim.attributes.count("COLOR_0");
       colors_were_light_ |= inst.color_0_was_light;
 
@@ -329,7 +329,8 @@ class SceneBuilder {
     }
   }
 
-  void read_colors(const tinygltf::Primitive& prim, MeshInstance& inst, const std::string& attribute) {
+  void read_colors(const tinygltf::Primitive& prim, MeshInstance& inst, const std::string& attribute,
+                   const std::string& pointer) {
     auto it = prim.attributes.find(attribute);
     if (it == prim.attributes.end()) return;
     int components;
@@ -340,8 +341,16 @@ class SceneBuilder {
       return;
     }
     inst.colors.resize(inst.positions.size());
-    for (size_t v = 0; v < inst.colors.size(); ++v)
-      inst.colors[v] = {c[v * size_t(components)], c[v * size_t(components) + 1], c[v * size_t(components) + 2]};
+    for (size_t v = 0; v < inst.colors.size(); ++v) {
+      const float* e = &c[v * size_t(components)];
+      // glTF bounds colours to [0, 1]; a brighter multiplier would reflect more light than arrives,
+      // and the output, which keeps these colours, would not validate.
+      for (int k = 0; k < components; ++k)
+        if (!(e[k] >= 0.0f && e[k] <= 1.0f))
+          refuse(file_, pointer + "/attributes/" + attribute,
+                 "has " + std::to_string(e[k]) + " at vertex " + std::to_string(v) + "; colours lie in [0, 1]");
+      inst.colors[v] = {e[0], e[1], e[2]};
+    }
   }
 
   // The root's extras.radbake (or asset.extras.radbake), written by radbake's writer: whether

@@ -20,14 +20,15 @@ class RADBAKE_OT_bake(bpy.types.Operator):
     _targets = None
 
     def _begin(self, context):
-        from . import runner
+        from . import results, runner
         targets = _targets(context)
         if not targets:
             raise runner.BakeError("nothing selected: select the mesh objects to bake, or bake the whole scene"
                                    if context.scene.radbake.scope == 'SELECTION' else "the scene has no mesh objects")
         bake = runner.Bake(context)
         try:
-            bake.export(context)
+            with results.earlier_bake_set_aside():
+                bake.export(context)
             bake.start(context.scene.radbake)
         except Exception:
             bake.cleanup()

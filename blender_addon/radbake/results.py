@@ -4,6 +4,7 @@ What the add-on adds carries the name "radbake": the UV map "radbake_lightmap" a
 attribute "radbake_lux" on each mesh, the lightmap images, and per material slot a copy of the material ("<name> (radbake)") wired to
 show the baked light; the object remembers its original materials so Remove can put them back.
 """
+import contextlib
 import json
 import math
 import os
@@ -113,6 +114,48 @@ def _corner_values(obj, primitives):
         for i, k in zip(poly.loop_indices, keys):
             values[i] = corner.get(k)
     return values
+
+
+@contextlib.contextmanager
+def earlier_bake_set_aside():
+    """While the scene is exported for the next bake, what the earlier bake added is taken off, so
+    the next bake sees the user's scene: Blender's exporter would write the lightmap UV map as a
+    TEXCOORD (which radbake keeps as given lightmap UVs), the render colour attribute as COLOR_0
+    (a base-colour multiplier in glTF, and lux is not a reflectance) and the lightmap materials
+    instead of the user's."""
+    layers, slots = [], []
+    for mesh in bpy.data.meshes:
+        if UV_MAP in mesh.uv_layers:
+            uvs = numpy.empty(len(mesh.uv_layers[UV_MAP].data) * 2, dtype=numpy.float32)
+            mesh.uv_layers[UV_MAP].data.foreach_get("uv", uvs)
+            layers.append((mesh, "uv", uvs, False))
+            mesh.uv_layers.remove(mesh.uv_layers[UV_MAP])
+        if COLORS in mesh.color_attributes:
+            attribute = mesh.color_attributes[COLORS]
+            colors = numpy.empty(len(attribute.data) * 4, dtype=numpy.float32)
+            attribute.data.foreach_get("color", colors)
+            is_render_color = mesh.color_attributes.find(COLORS) == mesh.color_attributes.render_color_index
+            layers.append((mesh, "color", colors, is_render_color))
+            mesh.color_attributes.remove(attribute)
+    for obj in bpy.data.objects:
+        originals = obj.get(ORIGINAL_MATERIALS) if obj.type == 'MESH' else None
+        if originals is not None:
+            slots.append((obj, [slot.material for slot in obj.material_slots]))
+            for slot, name in zip(obj.material_slots, list(originals)):
+                slot.material = bpy.data.materials.get(name) if name else None
+    try:
+        yield
+    finally:
+        for obj, materials in slots:
+            for slot, material in zip(obj.material_slots, materials):
+                slot.material = material
+        for mesh, kind, values, is_render_color in layers:
+            if kind == "uv":
+                mesh.uv_layers.new(name=UV_MAP).data.foreach_set("uv", values)
+            else:
+                compat.new_color_attribute(mesh, COLORS).data.foreach_set("color", values)
+                if is_render_color:
+                    mesh.color_attributes.render_color_index = mesh.color_attributes.find(COLORS)
 
 
 def _remove_named_layers(mesh):

@@ -124,9 +124,15 @@ def test_baking_twice_replaces_and_remove_restores():
     before = snapshot()
     assert bake() == {'FINISHED'}
     once = snapshot()
+    block = bpy.data.objects["short_block"]
+    light_once = corner_colours(block, (1, 0, 0))
     assert bake() == {'FINISHED'}
     twice = snapshot()
     assert once == twice, "a second bake piled things up"
+    # The first bake's light (lux on the meshes) must not reach the second as a base-colour
+    # multiplier: the same scene bakes to the same light (same seed, so within float noise).
+    light_twice = corner_colours(block, (1, 0, 0))
+    assert all(abs(a - b) <= 1e-3 * max(a, 1.0) for a, b in zip(light_once, light_twice)), (light_once, light_twice)
     assert bpy.ops.radbake.remove() == {'FINISHED'}
     assert snapshot() == before, "remove did not restore the scene"
 

@@ -189,8 +189,13 @@ TEST(Cli, BakeWritesTheFolderAndReportsProgressAsPlainLines) {
   EXPECT_NE(r.err.find("radbake: final gather 100%\n"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find('\r'), std::string::npos);
   for (const char* file : {"cornell_box.gltf", "cornell_box_lightmap.bin", "cornell_box_lightmap_0.exr",
-                           "cornell_box_lightmap_0.png", "report.json", "cornell_box_buffer0.bin"})
+                           "cornell_box_lightmap_0.png", "cornell_box_display.glb", "report.json"})
     EXPECT_TRUE(fs::exists(parent + "/out/" + file)) << file;
+  // Every attribute is rewritten through the atlas, so the input's buffer is left unused and pruned.
+  nlohmann::json written = nlohmann::json::parse(slurp(parent + "/out/cornell_box.gltf"));
+  ASSERT_EQ(written["buffers"].size(), 1u);
+  EXPECT_EQ(written["buffers"][0]["uri"], "cornell_box_lightmap.bin");
+  EXPECT_FALSE(fs::exists(parent + "/out/cornell_box_buffer0.bin"));
   nlohmann::json report = nlohmann::json::parse(slurp(parent + "/out/report.json"));
   EXPECT_EQ(report["generator"], "radbake");
   EXPECT_GT(report["counts"]["elements"].get<int>(), 1000);

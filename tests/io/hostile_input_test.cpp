@@ -133,6 +133,14 @@ TEST(HostileInput, TangentShorterThanPositionIsRefused) {
                  "accessor 4 has 2 elements, POSITION has 4");
 }
 
+TEST(HostileInput, ColourOutsideZeroToOneIsRefused) {
+  // COLOR_0 on the floor's positions: vertex 1 is at x = 2, a base-colour multiplier of 2.
+  const std::string path = floor_variant("hostile_bright_colour", [](nlohmann::json& doc) {
+    doc["meshes"][0]["primitives"][0]["attributes"]["COLOR_0"] = 0;
+  });
+  expect_refused(refusal(path), path, "/meshes/0/primitives/0/attributes/COLOR_0", "has 2.000000 at vertex 1; colours lie in [0, 1]");
+}
+
 TEST(HostileInput, MaterialMinusOneIsRefused) {
   expect_refused(refusal(hostile("material_minus_one")), hostile("material_minus_one"), "/meshes/0/primitives/0/material",
                  "is -1; must be from 0 to 0");
