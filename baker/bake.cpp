@@ -125,6 +125,38 @@ void interreflect(const Elements& elements, const Surface& surface, const RayTra
   result.patch_of_element = std::move(light_between.patches.patch_of_element);
 }
 
+// The baker's way: direct light from lights and emitting surfaces at every texel, then, when the
+// plan calls for it, the light between surfaces (interreflect).
+void compute_radiosity(const Scene& scene, const Elements& elements, const Surface& surface,
+                       const MaterialSampler& materials, const RayTracer& tracer, const BakeOptions& options,
+                       const EffectPlan& plan, const FiniteCheckContext& checked, Progress& progress,
+                       const PreviewCallback& on_preview, BakeResult& result) {
+  StageClock clock(result.report.stage_times);
+  DirectLightOptions direct = options.direct;
+  direct.shadow_rays = plan.shadow_rays;
+  direct.cull_unlit = !plan.exhaustive;
+  direct.light_traced = plan.light_traced;
+  std::vector<Rgb> punctual = clock.run("punctual lights", [&] {
+    return punctual_irradiance(elements, surface, scene.lights, tracer, direct, options.seed, progress);
+  });
+  result.direct = clock.run("area lights", [&] {
+    return emitter_irradiance(elements, surface, materials, tracer, direct, options.seed, progress);
+  });
+  double punctual_power = 0;  // lm, mean of RGB, landing on valid elements
+  for (size_t i = 0; i < elements.size(); ++i) {
+    if (elements.valid(i)) punctual_power += double(sum(punctual[i])) / 3.0 * elements.area[i];
+    result.direct[i] += punctual[i];
+  }
+  punctual = {};
+  check_element_values("direct light", result.direct, checked);
+  if (plan.interreflection) {
+    interreflect(elements, surface, tracer, options, plan, punctual_power, checked, progress, on_preview, result);
+  } else {
+    result.irradiance = result.direct;
+    result.patch_of_element.assign(elements.size(), UINT32_MAX);
+  }
+}
+
 }  // namespace
 
 BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& options,
@@ -171,32 +203,24 @@ BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& optio
   if (std::none_of(elements.flags.begin(), elements.flags.end(), [](uint8_t f) { return !(f & kBuried); }))
     throw InputError("no lightmap texel covers a visible surface: raise the texel density or the page size");
 
-  DirectLightOptions direct = options.direct;
-  direct.shadow_rays = plan.shadow_rays;
-  direct.cull_unlit = !plan.exhaustive;
-  direct.light_traced = plan.light_traced;
-  std::vector<Rgb> punctual = clock.run("punctual lights", [&] {
-    return punctual_irradiance(elements, surface, scene.lights, *tracer, direct, options.seed, progress);
-  });
-  result.direct = clock.run("area lights", [&] {
-    return emitter_irradiance(elements, surface, materials, *tracer, direct, options.seed, progress);
-  });
-  double punctual_power = 0;  // lm, mean of RGB, landing on valid elements
-  for (size_t i = 0; i < elements.size(); ++i) {
-    if (elements.valid(i)) punctual_power += double(sum(punctual[i])) / 3.0 * elements.area[i];
-    result.direct[i] += punctual[i];
-  }
-  punctual = {};
-  check_element_values("direct light", result.direct, checked);
-
+  const size_t n = elements.size();
   report.plan = plan.decisions;
   report.warnings = plan.warnings;
-  const size_t n = elements.size();
-  if (plan.interreflection) {
-    interreflect(elements, surface, *tracer, options, plan, punctual_power, checked, progress, on_preview, result);
-  } else {
-    result.irradiance = result.direct;
+  if (options.method == Method::PathTrace) {
+    PathTraced traced = clock.run("path tracing", [&] {
+      return path_trace(elements, surface, materials, scene.lights, *tracer, options.path_trace, options.seed, progress);
+    });
+    check_element_values("path tracing", traced.irradiance, checked);
+    result.irradiance = std::move(traced.irradiance);
+    result.standard_error = std::move(traced.standard_error);
     result.patch_of_element.assign(n, UINT32_MAX);
+    report.path_samples = traced.samples;
+    report.path_relative_noise = traced.relative_noise;
+    report.path_mean_vertices = traced.mean_path_vertices;
+    report.plan.push_back({"method", "path tracing",
+                           "every light and every bounce, whatever the plan would leave out: the reference"});
+  } else {
+    compute_radiosity(scene, elements, surface, materials, *tracer, options, plan, checked, progress, on_preview, result);
   }
   if (!options.keep_direct) result.direct = {};
   std::vector<Rgb> radiosity;

@@ -12,6 +12,7 @@
 #include "baker/energy_balance.h"
 #include "baker/finish.h"
 #include "baker/interreflection.h"
+#include "baker/path_tracer.h"
 #include "baker/patches.h"
 #include "baker/plan.h"
 #include "baker/progress.h"
@@ -27,7 +28,15 @@ enum class StoredQuantity {
   Radiosity,   // lm/m2 leaving: emission plus reflected light
 };
 
+// How the light at each texel is computed.
+enum class Method {
+  Radiosity,  // patches, form factors, the radiosity solve and a final gather: the baker
+  PathTrace,  // unbiased Monte Carlo per texel: the independent reference the baker is measured against
+};
+
 struct BakeOptions {
+  Method method = Method::Radiosity;
+  PathTraceOptions path_trace;  // with Method::PathTrace
   PlanOptions plan;
   ElementOptions elements;
   PatchOptions patches;
@@ -65,6 +74,10 @@ struct BakeReport {
   Rgb ambient{};
   EnergyBalance balance;
   double gather_back_face_fraction = 0;
+  // Method::PathTrace: paths per texel, and the noise estimate (PathTraced::relative_noise).
+  uint32_t path_samples = 0;
+  double path_relative_noise = 0;
+  double path_mean_vertices = 0;
   std::vector<std::string> warnings;
 };
 
@@ -75,6 +88,7 @@ struct BakeResult {
   std::vector<Rgb> irradiance;                     // per element, lux
   std::vector<Rgb> direct;                         // its direct part, lux; empty unless keep_direct
   std::vector<uint32_t> patch_of_element;          // UINT32_MAX for buried elements
+  std::vector<float> standard_error;               // Method::PathTrace: per element, lux; else empty
   BakeReport report;
 };
 

@@ -151,11 +151,17 @@ Rgb MaterialSampler::reflectance(uint32_t triangle, Vec2 bary, float spacing) co
   return rho;
 }
 
+Rgb MaterialSampler::emission_bound(uint32_t triangle) const {
+  const Material& m = material_of(scene_, surface_.material[triangle]);
+  if (!m.emits()) return {0, 0, 0};
+  return m.emissive * (m.emissive_strength * emission_scale_ * kExitancePerEmissiveUnit);
+}
+
 Rgb MaterialSampler::emission(uint32_t triangle, Vec2 bary, float spacing) const {
   int mi = surface_.material[triangle];
+  Rgb e = emission_bound(triangle);
+  if (max_component(e) <= 0) return e;
   const Material& m = material_of(scene_, mi);
-  if (!m.emits()) return {0, 0, 0};
-  Rgb e = m.emissive * (m.emissive_strength * emission_scale_ * kExitancePerEmissiveUnit);
   if (mi >= 0 && emissive_texture_[size_t(mi)] >= 0)
     e = e * sample(m.emissive_texture, emissive_texture_[size_t(mi)], triangle, bary, spacing);
   return e;

@@ -30,6 +30,8 @@ class MaterialSampler {
   // chooses the texture mip level so that each sample averages its share of the footprint.
   Rgb reflectance(uint32_t triangle, Vec2 bary, float spacing) const;
   Rgb emission(uint32_t triangle, Vec2 bary, float spacing) const;  // exitance, lm/m2
+  // The most any point of the triangle emits, lm/m2: its emission with the texture at full.
+  Rgb emission_bound(uint32_t triangle) const;
 
   // True when neither reflectance nor emission varies over the triangle (no textures, no COLOR_0).
   bool is_uniform(uint32_t triangle) const;

@@ -30,6 +30,7 @@ enum class Stream : uint64_t {
   Probe,
   Footprint,
   Hemicube,
+  PathTrace,
 };
 
 // A counter-based generator for one (seed, stream, key) triple.

@@ -128,6 +128,11 @@ bake options:
   --quality NAME          draft | preview | production | reference: ray counts, tolerance and
                           patch size together (default preview; docs/accuracy.md has each
                           preset's measured error and time); options given as well override it
+  --method NAME           radiosity | pathtrace: the baker, or unbiased Monte Carlo path tracing
+                          per texel with no patches, the independent reference (slow; its noise
+                          estimate is printed and in report.json) (default radiosity)
+  --samples N             pathtrace: paths per texel, 2..16777216; noise falls as 1/sqrt(N)
+                          (default 1024)
   --tolerance X           stop when unshot light <= X of the light brought in (default 0.001)
   --solver NAME           shooting | gauss-seidel | jacobi (default shooting)
   --threads N             worker threads, 0 = all cores (default 0)
@@ -352,6 +357,12 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
 
   std::map<std::string, Setter> with_value = {
       {"--output", [&](const std::string& v) { b.output = v; }},
+      {"--method", [&](const std::string& v) {
+         if (v == "radiosity") b.bake.method = Method::Radiosity;
+         else if (v == "pathtrace") b.bake.method = Method::PathTrace;
+         else throw UsageError("option --method must be radiosity or pathtrace" + got(v));
+       }},
+      {"--samples", [&](const std::string& v) { b.bake.path_trace.samples = uint32_t(parse_integer("--samples", v, 2, 1 << 24)); }},
       {"--tolerance", [&](const std::string& v) { b.bake.solve.tolerance = parse_number("--tolerance", v, 1e-9, 1); }},
       {"--solver", [&](const std::string& v) {
          if (v == "shooting") b.bake.solve.solver = Solver::Shooting;
@@ -454,6 +465,8 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
       {"density", b.atlas.texel_density > 0 ? number(b.atlas.texel_density) : "auto"},
       {"max-page-size", number(b.atlas.max_page_size)},
       {"padding", number(b.atlas.padding)},
+      {"method", b.bake.method == Method::Radiosity ? "radiosity" : "pathtrace"},
+      {"samples", number(b.bake.path_trace.samples)},
       {"tolerance", number(b.bake.solve.tolerance)},
       {"solver", solver_names[int(b.bake.solve.solver)]},
       {"threads", number(b.bake.threads)},

@@ -194,6 +194,8 @@ int run_bake(const radbake::BakeCommand& cmd) {
   char balance[64] = "energy balance not measured";
   if (result.report.balance.measured)
     std::snprintf(balance, sizeof balance, "energy balance %.3f%%", 100.0 * result.report.balance.relative_error);
+  else if (result.report.path_samples > 0)
+    std::snprintf(balance, sizeof balance, "path traced, noise %.2f%%", 100.0 * result.report.path_relative_noise);
   std::printf("radbake: wrote %s/%s (%zu page%s, %zu texels, %s, %.1f s)\n", cmd.output.c_str(),
               gltf.gltf_file.c_str(), result.pages.size(), result.pages.size() == 1 ? "" : "s",
               result.report.valid_elements, balance, run.total_seconds);

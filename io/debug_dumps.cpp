@@ -12,8 +12,11 @@ std::vector<std::string> write_debug_dumps(const BakeResult& r, const std::vecto
   const Elements& e = r.elements;
   const size_t n = e.size();
   std::vector<Rgb> indirect(n), normals(n), flags(n), patch_colour(n);
+  const bool has_direct = r.direct.size() == n;  // path tracing does not separate direct light
+  std::vector<Rgb> standard_error(r.standard_error.size());
+  for (size_t i = 0; i < standard_error.size(); ++i) standard_error[i] = Rgb{1, 1, 1} * r.standard_error[i];
   for (size_t i = 0; i < n; ++i) {
-    indirect[i] = r.irradiance[i] - r.direct[i];
+    if (has_direct) indirect[i] = r.irradiance[i] - r.direct[i];
     normals[i] = e.normal[i] * 0.5f + Rgb{0.5f, 0.5f, 0.5f};
     flags[i] = {(e.flags[i] & kBuried) ? 1.0f : 0.0f, (e.flags[i] & kPushedOut) ? 1.0f : 0.0f,
                 (e.flags[i] & kNearGeometry) ? 1.0f : 0.0f};
@@ -21,9 +24,10 @@ std::vector<std::string> write_debug_dumps(const BakeResult& r, const std::vecto
     patch_colour[i] = {float(h & 255) / 255, float((h >> 8) & 255) / 255, float((h >> 16) & 255) / 255};
   }
   std::vector<std::pair<std::string, const std::vector<Rgb>*>> dumps = {
-      {"irradiance", &r.irradiance}, {"direct", &r.direct},   {"indirect", &indirect},
-      {"reflectance", &e.reflectance}, {"emission", &e.emission}, {"normals", &normals},
-      {"patches", &patch_colour}};
+      {"irradiance", &r.irradiance}, {"reflectance", &e.reflectance}, {"emission", &e.emission},
+      {"normals", &normals}, {"patches", &patch_colour}};
+  if (has_direct) dumps.insert(dumps.end(), {{"direct", &r.direct}, {"indirect", &indirect}});
+  if (!standard_error.empty()) dumps.push_back({"standard_error", &standard_error});
   std::filesystem::path dir = std::filesystem::path(folder) / "debug";
   std::filesystem::create_directories(dir);
   std::vector<std::string> written;

@@ -35,7 +35,8 @@ void write_report(const std::string& path, const RunInfo& run, const Scene& scen
                              "double-sided ones given texels of their own included) and what punctual lights "
                              "deliver onto surfaces; lost is light striking back faces or buried texels"}});
   else
-    balance["note"] = "the plan skipped interreflection, so no ray measured the light that escapes";
+    balance["note"] = bake.path_samples > 0 ? "path tracing does not follow the light that escapes"
+                                            : "the plan skipped interreflection, so no ray measured the light that escapes";
   const SceneSummary& s = scene.summary;
   const DisplaySummary& d = run.display;
   json refinement = json::array();
@@ -78,6 +79,14 @@ void write_report(const std::string& path, const RunInfo& run, const Scene& scen
                   {"converged", bake.converged},
                   {"ambient_lm_per_m2", {bake.ambient.x, bake.ambient.y, bake.ambient.z}}}},
       {"energy_balance", balance},
+      {"path_tracing", bake.path_samples == 0 ? json(nullptr)
+                                              : json{{"samples_per_texel", bake.path_samples},
+                                                     {"relative_noise", bake.path_relative_noise},
+                                                     {"surface_hits_per_path", bake.path_mean_vertices},
+                                                     {"note", "relative_noise: RMS of the texels' standard errors "
+                                                              "(from each texel's own paths) over the mean texel "
+                                                              "value, what the noise adds to a relative RMSE "
+                                                              "against this bake"}}},
       {"lightmaps", {{"quantity", lightmaps.quantity}, {"unit", lightmaps.unit},
                      {"png_intensity", lightmaps.png_scale}}},
       {"display", display},
