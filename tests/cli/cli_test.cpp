@@ -168,6 +168,26 @@ TEST(Cli, BudgetsExceededExitTwoWithTheEstimate) {
   EXPECT_EQ(radbake(bake + " --max-memory 200M --max-page-size 64 --quiet").status, 0);
 }
 
+TEST(Cli, PathTracingStatesItsNoiseAndFallsWithMoreSamples) {
+  std::string parent = test::fresh_folder("cli_pathtrace");
+  const std::string bake = "bake " + test::source_path("samples/cornell_box/cornell_box.gltf") + " --max-page-size 64 --quiet" +
+                           " --method pathtrace -o " + parent;
+  Outcome few = radbake(bake + "/few --samples 16"), more = radbake(bake + "/more --samples 64");
+  ASSERT_EQ(few.status, 0) << few.err;
+  ASSERT_EQ(more.status, 0) << more.err;
+  EXPECT_NE(few.out.find("path traced, noise "), std::string::npos) << few.out;
+  nlohmann::json a = nlohmann::json::parse(slurp(parent + "/few/report.json"));
+  nlohmann::json b = nlohmann::json::parse(slurp(parent + "/more/report.json"));
+  EXPECT_EQ(a["options"]["method"], "pathtrace");
+  EXPECT_EQ(a["path_tracing"]["samples_per_texel"], 16);
+  EXPECT_FALSE(a["energy_balance"]["measured"].get<bool>());
+  // Four times the paths, half the noise (within 20% over these few hundred texels).
+  EXPECT_NEAR(b["path_tracing"]["relative_noise"].get<double>() / a["path_tracing"]["relative_noise"].get<double>(), 0.5, 0.1);
+  Outcome wrong = radbake(bake + "/wrong --method montecarlo");
+  EXPECT_EQ(wrong.status, 2);
+  EXPECT_NE(wrong.err.find("option --method must be radiosity or pathtrace, got 'montecarlo'"), std::string::npos) << wrong.err;
+}
+
 TEST(Cli, AllowExternalFilesLetsAnOutsideImageThroughAndCopiesIt) {
   std::string parent = test::fresh_folder("cli_external");
   const std::string bake = "bake " + fixture("hostile/image_parent_path.gltf") + " -o " + parent + "/out --max-page-size 64";
