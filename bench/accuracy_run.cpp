@@ -5,8 +5,10 @@
 //   accuracy_run SCENE [radbake bake options] [--reference FILE | --write-reference FILE]
 //
 // SCENE is furnace, emitter-over-floor or point-light-over-floor (built here, with closed-form
-// irradiance per texel) or a glTF file, whose reference is a bake at extreme settings written
-// earlier with --write-reference (the same density and page size give the same texels).
+// irradiance per texel) or a glTF file, whose reference is a bake written earlier with
+// --write-reference (the same density and page size give the same texels): a path-traced one
+// (--method pathtrace) also writes its texels' standard errors, and runs against it then report
+// their error with the reference's noise taken out.
 #include <sys/resource.h>
 
 #include <algorithm>
@@ -105,6 +107,14 @@ std::vector<Rgb> read_values(const std::string& path, size_t count) {
   return values;
 }
 
+std::vector<float> read_noise(const std::string& path, size_t count) {
+  std::ifstream in(path, std::ios::binary);
+  std::vector<float> values(count);
+  in.read(reinterpret_cast<char*>(values.data()), std::streamsize(count * sizeof(float)));
+  if (!in || in.peek() != EOF) throw std::runtime_error(path + " is not a reference's noise for these texels");
+  return values;
+}
+
 int run(int argc, char** argv) {
   if (argc < 2) throw std::runtime_error("usage: accuracy_run SCENE [bake options] [--reference F | --write-reference F]");
   std::vector<std::string> args = {"bake", argv[1], "-o", "unused"};
@@ -127,9 +137,17 @@ int run(int argc, char** argv) {
   if (!write_reference.empty()) {
     std::ofstream out(write_reference, std::ios::binary);
     out.write(reinterpret_cast<const char*>(result.irradiance.data()), std::streamsize(e.size() * sizeof(Rgb)));
+    // A path-traced reference keeps its texels' standard errors beside it.
+    if (!result.standard_error.empty())
+      std::ofstream(write_reference + ".noise", std::ios::binary)
+          .write(reinterpret_cast<const char*>(result.standard_error.data()), std::streamsize(e.size() * sizeof(float)));
   }
   std::vector<Rgb> exact;
-  if (!reference.empty()) exact = read_values(reference, e.size());
+  std::vector<float> reference_noise;
+  if (!reference.empty()) {
+    exact = read_values(reference, e.size());
+    if (std::ifstream(reference + ".noise")) reference_noise = read_noise(reference + ".noise", e.size());
+  }
   else if (study.exact) {
     exact.resize(e.size());
     for (size_t i = 0; i < e.size(); ++i) exact[i] = study.exact(e.position[i], e.normal[i]);
@@ -152,6 +170,18 @@ int run(int argc, char** argv) {
     line["rmse"] = d.all.rmse;
     line["p99"] = d.all.p99;
     line["reference_mean_lux"] = d.all.reference_level;
+    if (!reference_noise.empty()) {
+      // The reference's own noise adds to the squared error of every texel in expectation (it is
+      // independent of the bake's): taken out, what is left is the bake's error against the
+      // exact answer. Texels are those the comparison took (valid elements).
+      double squared = 0;
+      size_t n = 0;
+      for (size_t i = 0; i < e.size(); ++i)
+        if (e.valid(i)) squared += double(reference_noise[i]) * reference_noise[i], ++n;
+      const double noise = n ? std::sqrt(squared / double(n)) / d.all.reference_level : 0;
+      line["reference_noise"] = noise;
+      line["rmse_noise_removed"] = std::sqrt(std::max(0.0, d.all.rmse * d.all.rmse - noise * noise));
+    }
   }
   std::printf("%s\n", line.dump().c_str());
   return 0;
