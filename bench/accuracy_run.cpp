@@ -3,6 +3,7 @@
 // JSON line with the bake's time, peak memory, and its error against the reference.
 //
 //   accuracy_run SCENE [radbake bake options] [--reference FILE | --write-reference FILE]
+//                [--contact-distance METRES]
 //
 // SCENE is furnace, emitter-over-floor or point-light-over-floor (built here, with closed-form
 // irradiance per texel) or a glTF file, whose reference is a bake written earlier with
@@ -23,6 +24,8 @@
 #include "baker/direct_light.h"
 #include "baker/lightmap_difference.h"
 #include "baker/material_sampler.h"
+#include "baker/ray_tracer.h"
+#include "baker/sampling.h"
 #include "baker/surface.h"
 #include "cli/command_line.h"
 #include "io/gltf.h"
@@ -107,6 +110,23 @@ std::vector<Rgb> read_values(const std::string& path, size_t count) {
   return values;
 }
 
+// Contact texels: those with another surface within `distance` metres above them (a block's foot,
+// the floor beside it, the corners of walls), found with 64 rays over each texel's hemisphere.
+// Where a lightmapper's near-field errors are.
+std::vector<uint8_t> contact_texels(const Scene& scene, const Atlas& atlas, const Elements& e, float distance) {
+  const Surface surface = build_surface(scene, atlas);
+  const RayTracer tracer(surface);
+  std::vector<uint8_t> contact(e.size(), 0);
+  constexpr uint32_t kRays = 64;
+  for (size_t i = 0; i < e.size(); ++i) {
+    if (!e.valid(i)) continue;
+    const Vec3 ng = surface.normal[e.triangle[i]], origin = e.position[i] + ng * e.offset[i];
+    for (uint32_t k = 0; k < kRays && !contact[i]; ++k)
+      contact[i] = tracer.occluded(origin, hemisphere_direction(e.normal[i], ng, cmj_sample(k, kRays, 1)), 0.0f, distance);
+  }
+  return contact;
+}
+
 std::vector<float> read_noise(const std::string& path, size_t count) {
   std::ifstream in(path, std::ios::binary);
   std::vector<float> values(count);
@@ -119,8 +139,13 @@ int run(int argc, char** argv) {
   if (argc < 2) throw std::runtime_error("usage: accuracy_run SCENE [bake options] [--reference F | --write-reference F]");
   std::vector<std::string> args = {"bake", argv[1], "-o", "unused"};
   std::string reference, write_reference;
+  float contact_distance = 0.02f;
   for (int i = 2; i < argc; ++i) {
     std::string a = argv[i];
+    if (a == "--contact-distance" && i + 1 < argc) {
+      contact_distance = std::stof(argv[++i]);
+      continue;
+    }
     if ((a == "--reference" || a == "--write-reference") && i + 1 < argc) (a == "--reference" ? reference : write_reference) = argv[++i];
     else args.push_back(a);
   }
@@ -170,6 +195,25 @@ int run(int argc, char** argv) {
     line["rmse"] = d.all.rmse;
     line["p99"] = d.all.p99;
     line["reference_mean_lux"] = d.all.reference_level;
+    const std::vector<uint8_t> contact = contact_texels(study.scene, atlas, e, contact_distance);
+    double contact_sum = 0, contact_reference = 0, contact_squared = 0, contact_noise = 0;
+    size_t contact_count = 0;
+    for (size_t i = 0; i < e.size(); ++i) {
+      if (!contact[i]) continue;
+      const double a = sum(exact[i]) / 3.0, b = sum(result.irradiance[i]) / 3.0;
+      contact_sum += b;
+      contact_reference += a;
+      contact_squared += (b - a) * (b - a);
+      if (!reference_noise.empty()) contact_noise += double(reference_noise[i]) * reference_noise[i];
+      ++contact_count;
+    }
+    if (contact_count > 0) {
+      const double level = contact_reference / double(contact_count);
+      line["contact_texels"] = contact_count;
+      line["contact_bias"] = contact_sum / contact_reference - 1;
+      line["contact_rmse_noise_removed"] =
+          std::sqrt(std::max(0.0, contact_squared - contact_noise) / double(contact_count)) / level;
+    }
     if (!reference_noise.empty()) {
       // The reference's own noise adds to the squared error of every texel in expectation (it is
       // independent of the bake's): taken out, what is left is the bake's error against the
