@@ -108,7 +108,11 @@ reading options (bake and uv):
   --max-triangles N       refuse a scene with more triangles after instancing (default 20000000)
 
 lightmap UV options (bake and uv):
-  --density N             lightmap texels per metre (default: auto, the most that fits one page)
+  --density N|auto        lightmap texels per metre (default auto: about --texels texels over the
+                          scene's surface, fewer if they do not fit one page; report.json says
+                          which)
+  --texels N              the automatic density's budget, texels over the whole surface
+                          (default 50000: a few seconds at the default preset on 2 cores)
   --max-page-size N       texels per page side, 16..16384 (default 1024); generated pages are
                           powers of two, at most the largest power of two not above N
   --any-page-size         generated pages as tight as their charts (sides a multiple of 4, up to
@@ -212,7 +216,10 @@ using Flag = std::function<void()>;
 
 // The atlas options `bake` and `uv` share.
 void atlas_options(AtlasOptions& a, std::map<std::string, Setter>& with_value, std::map<std::string, Flag>& flags) {
-  with_value["--density"] = [&](const std::string& v) { a.texel_density = float(parse_number("--density", v, 1e-6, 1e9)); };
+  with_value["--density"] = [&](const std::string& v) {
+    a.texel_density = v == "auto" ? 0.0f : float(parse_number("--density", v, 1e-6, 1e9));
+  };
+  with_value["--texels"] = [&](const std::string& v) { a.automatic_texels = size_t(parse_integer("--texels", v, 16, 1L << 32)); };
   with_value["--max-page-size"] = [&](const std::string& v) { a.max_page_size = int(parse_integer("--max-page-size", v, 16, 16384)); };
   with_value["--padding"] = [&](const std::string& v) { a.padding = int(parse_integer("--padding", v, 0, 64)); };
   with_value["--lightmap-uvs"] = [&](const std::string& v) {
@@ -463,6 +470,7 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
   const char* solver_names[] = {"shooting", "gauss-seidel", "jacobi"};
   b.effective = {
       {"density", b.atlas.texel_density > 0 ? number(b.atlas.texel_density) : "auto"},
+      {"texels", number(double(b.atlas.automatic_texels))},
       {"max-page-size", number(b.atlas.max_page_size)},
       {"padding", number(b.atlas.padding)},
       {"method", b.bake.method == Method::Radiosity ? "radiosity" : "pathtrace"},

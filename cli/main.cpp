@@ -140,6 +140,11 @@ int run_bake(const radbake::BakeCommand& cmd) {
   atlas_options.progress = progress;
   Atlas atlas = ensure_lightmap_uvs(mesh_views(loaded.scene), atlas_options);
   run.io_times.push_back({"lightmap uvs", seconds_since(t)});
+  if (!cmd.quiet) {
+    display.finish();
+    std::fprintf(stderr, "radbake: lightmap: %.4g texels/m, %.3g cm texels (%s)\n", atlas.texel_density,
+                 100.0 / atlas.texel_density, atlas.density_choice.c_str());
+  }
 
   BakeOptions options = cmd.bake;
   options.keep_direct = cmd.debug_dumps;
@@ -208,7 +213,7 @@ void print_stats(const radbake::Atlas& atlas, const radbake::UvCommand& cmd, dou
     nlohmann::ordered_json j = {
         {"input", cmd.input}, {"pages", atlas.pages.size()}, {"page_texels", s.page_texels},
         {"covered_texels", s.covered_texels}, {"texel_density_per_m", atlas.texel_density},
-        {"density_lowered", atlas.density_lowered}, {"charts", s.charts}, {"utilisation", s.utilisation},
+        {"density_lowered", atlas.density_lowered}, {"density_choice", atlas.density_choice}, {"charts", s.charts}, {"utilisation", s.utilisation},
         {"stretch_l2", s.stretch_l2}, {"stretch_max", s.stretch_max}, {"seam_length_m", s.seam_length},
         {"overlapping_texels", s.overlapping_texels}, {"flipped_triangles", s.flipped_triangles},
         {"padding_violations", s.padding_violations}, {"padding", cmd.atlas.padding}, {"seconds", s.seconds},
@@ -222,8 +227,7 @@ void print_stats(const radbake::Atlas& atlas, const radbake::UvCommand& cmd, dou
     std::printf("%s%dx%d", p ? ", " : "", atlas.pages[p].width, atlas.pages[p].height);
   std::printf(")\n");
   if (cmd.evaluate_texcoord < 0)
-    std::printf("  texel density       %.4g texels/m%s\n", atlas.texel_density,
-                atlas.density_lowered ? " (lowered to fit one page)" : cmd.atlas.texel_density > 0 ? "" : " (automatic)");
+    std::printf("  texel density       %.4g texels/m (%s)\n", atlas.texel_density, atlas.density_choice.c_str());
   std::printf("  charts              %zu\n", s.charts);
   std::printf("  utilisation         %.1f%% (%zu covered texels of %zu)\n", 100 * s.utilisation, s.covered_texels,
               s.page_texels);

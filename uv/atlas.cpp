@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <stdexcept>
 
@@ -174,8 +175,11 @@ Atlas ensure_lightmap_uvs(const std::vector<MeshView>& meshes, const AtlasOption
   const int page_size = options.any_page_size ? options.max_page_size : largest_power_of_two_at_most(options.max_page_size);
   double total_area = 0;
   for (const MeshView& m : meshes) total_area += world_area(m);
-  // A first guess for the automatic density: 70% of one page, what the packer usually reaches.
-  const float guess = float(page_size * std::sqrt(0.7 / std::max(total_area, 1e-12)));
+  atlas.surface_area = total_area;
+  // The automatic density: the texel budget over the surface, or what fills one page if less
+  // (guessed at 70% of the page, what the packer usually reaches, then searched).
+  const float budget_density = float(std::sqrt(double(std::max<size_t>(1, options.automatic_texels)) / std::max(total_area, 1e-12)));
+  const float guess = std::min(budget_density, float(page_size * std::sqrt(0.7 / std::max(total_area, 1e-12))));
   float density = options.texel_density > 0 ? options.texel_density : guess;
 
   // Kept TEXCOORD_1 layouts get pages of their own, after the generated ones: own_page[m] indexes
@@ -239,7 +243,7 @@ Atlas ensure_lightmap_uvs(const std::vector<MeshView>& meshes, const AtlasOption
   PackResult packed = pack(density);
   if (!charts.empty() && (options.texel_density <= 0 || (options.fit_one_page && !fits(packed)))) {
     // The highest density that fits one page: widen a bracket round the first try, then bisect.
-    const float cap = options.texel_density > 0 ? options.texel_density : INFINITY;
+    const float cap = options.texel_density > 0 ? options.texel_density : budget_density;
     float lo = 0, hi = 0;  // highest known to fit, lowest known not to
     (fits(packed) ? lo : hi) = density;
     for (int step = 0; step < 40 && (lo == 0 || hi == 0); ++step) {
@@ -264,6 +268,15 @@ Atlas ensure_lightmap_uvs(const std::vector<MeshView>& meshes, const AtlasOption
     }
   }
   atlas.texel_density = density;
+  char choice[200];
+  if (options.texel_density > 0)
+    std::snprintf(choice, sizeof choice, atlas.density_lowered ? "given, lowered to fit one page" : "given");
+  else if (density >= budget_density * 0.999f)
+    std::snprintf(choice, sizeof choice, "automatic: %zu texels over %.3g m2 of surface", options.automatic_texels, total_area);
+  else
+    std::snprintf(choice, sizeof choice, "automatic: the most that fits one %d-texel page (%zu texels over %.3g m2 would not)",
+                  page_size, options.automatic_texels, total_area);
+  atlas.density_choice = choice;
   atlas.pages = packed.pages;
   // Trimming only takes empty texels off the top and right: charts keep their texel positions, and
   // lay_out_charts divides by the final page size.

@@ -48,7 +48,7 @@ class RadbakeSettings(bpy.types.PropertyGroup):
     )
     texel_density: FloatProperty(
         name="Texel density",
-        description="Lightmap texels per metre; 0 picks the highest density that fits one page",
+        description="Lightmap texels per metre; 0 is automatic: about 50,000 texels over the scene, fewer if they do not fit one page",
         min=0.0, max=10000.0, soft_max=1000.0, default=0.0, unit='NONE',
     )
     max_page_size: IntProperty(

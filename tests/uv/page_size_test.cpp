@@ -4,6 +4,8 @@
 // file lays out on one page share it.
 #include <gtest/gtest.h>
 
+#include <cstdint>
+
 #include "io/gltf.h"
 #include "support/scene_builders.h"
 
@@ -21,6 +23,7 @@ AtlasOptions options(float density, int max_page_size, bool any_page_size = fals
   o.texel_density = density;
   o.max_page_size = max_page_size;
   o.any_page_size = any_page_size;
+  o.automatic_texels = SIZE_MAX;  // an automatic density fills the page: what these tests are about
   return o;
 }
 
