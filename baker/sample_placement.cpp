@@ -24,8 +24,7 @@ void place_samples(Elements& e, const Surface& surface, const RayTracer& tracer,
     for (size_t i = r.begin(); i < r.end(); ++i) {
       const uint32_t t = e.triangle[i];
       const Vec3 ng = surface.normal[t];
-      const Vec2* c = &surface.corner_lightmap[3 * t];
-      const float texel_size = std::sqrt(surface.area[t] / (0.5f * std::fabs(cross2(c[1] - c[0], c[2] - c[0]))));
+      const float texel_size = surface.texel_size(t);
       const float eps = e.offset[i];
       Vec3 tangent, bitangent;
       orthonormal_basis(ng, tangent, bitangent);
