@@ -75,9 +75,11 @@ CoverSplit split_at_cover(const Elements& e, const Surface& surface, const RayTr
   const uint32_t t = e.triangle[i];
   const Vec3 lift = surface.normal[t] * e.offset[i];
   const bool covered = e.flags[i] & kUnderCover;
-  auto far_side = [&](Vec2 u) {
+  enum Side { kOffSurface, kNear, kFar };
+  auto side_at = [&](Vec2 u) {
     Vec3 p;
-    return footprint_surface_point(e, surface, i, u, p) && under_cover(surface, tracer, t, p + lift) != covered;
+    if (!footprint_surface_point(e, surface, i, u, p)) return kOffSurface;
+    return under_cover(surface, tracer, t, p + lift) == covered ? kNear : kFar;
   };
   constexpr int k = kFootprintCells;
   int near_count = 0, far_count = 0;
@@ -85,19 +87,16 @@ CoverSplit split_at_cover(const Elements& e, const Surface& surface, const RayTr
   uint16_t centre_far = 0, touched = 0;  // cells whose centre, or any of whose points, is across
   for (uint32_t m = 0; m < kCoverShareProbes; ++m) {
     const Vec2 u = cmj_sample(m, kCoverShareProbes, pattern);
-    Vec3 p;
     const int cell = std::min(k - 1, int(u.y * k)) * k + std::min(k - 1, int(u.x * k));
-    if (!(e.visible_cells[i] >> cell & 1) || !footprint_surface_point(e, surface, i, u, p)) continue;
-    if (under_cover(surface, tracer, t, p + lift) == covered) {
-      ++near_count;
-    } else {
-      ++far_count;
-      far_x += u.x - 0.5f, far_y += u.y - 0.5f;
-      touched |= uint16_t(1u << cell);
-    }
+    const Side side = e.visible_cells[i] >> cell & 1 ? side_at(u) : kOffSurface;
+    near_count += side == kNear;
+    if (side != kFar) continue;
+    ++far_count;
+    far_x += u.x - 0.5f, far_y += u.y - 0.5f;
+    touched |= uint16_t(1u << cell);
   }
   for (int c = 0; c < k * k; ++c)
-    if ((e.visible_cells[i] >> c & 1) && far_side({(c % k + 0.5f) / k, (c / k + 0.5f) / k}))
+    if ((e.visible_cells[i] >> c & 1) && side_at({(c % k + 0.5f) / k, (c / k + 0.5f) / k}) == kFar)
       centre_far |= uint16_t(1u << c);
   // Rays start (and direct light is taken) at the centres of the cells kept, so a cell the edge
   // crosses goes too: its centre may lie a hair from the slit, where the light escaping from the
