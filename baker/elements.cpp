@@ -118,9 +118,7 @@ Elements build_elements(const Surface& surface, const MaterialSampler& materials
       e.triangle[i] = t;
       e.page[i] = largest->page;
       e.texel[i] = largest->texel;
-      const Vec2* c = &surface.corner_lightmap[3 * t];
-      float texel_size = std::sqrt(surface.area[t] / (0.5f * std::fabs(cross2(c[1] - c[0], c[2] - c[0]))));
-      e.offset[i] = ray_offset(e.position[i], texel_size);
+      e.offset[i] = ray_offset(e.position[i], surface.texel_size(t));
       if (whole_plane) e.flags[i] |= kFlatTexel;
 
       if (uniform) {

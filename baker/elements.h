@@ -16,12 +16,15 @@ class RayTracer;
 
 enum ElementFlags : uint8_t {
   kPushedOut = 1,     // the texel centre was behind nearby geometry; the sample moved in front of it
-  kNearGeometry = 2,  // other geometry crosses the footprint: rays start only where the sample sees
+  kNearGeometry = 2,  // other geometry crosses or covers part of the footprint: rays start only from
+                      // the part on the sample's side (visible_cells)
   kBuried = 4,        // the sample sees mostly back faces: it is inside geometry, valued by dilation
   kJoinsRight = 8,    // the element to the right (same chart) is on the same side of all geometry
   kJoinsDown = 16,    // likewise the element below; patches only grow across these joins
   kFiltered = 32,     // reflectance and emission are box-filtered over the footprint (else read once)
   kFlatTexel = 64,    // one plane of one chart covers the whole texel, whichever triangles it is cut into
+  kUnderCover = 128,  // under_cover at the sample: the texel is in a thin gap (under a lamp hung just
+                      // under a ceiling), not in the open beside it
 };
 
 struct Elements {
@@ -37,7 +40,8 @@ struct Elements {
   std::vector<uint8_t> flags;
   std::vector<float> offset;      // metres: how far rays start above the surface to avoid self-hits
   // For elements near geometry: which cells of a 4 x 4 grid over the texel the sample point sees
-  // along the surface (bit 4 * row + column); rays start only from those. All ones elsewhere.
+  // along the surface and are on its side of any cover (bit 4 * row + column); rays start only
+  // from those. All ones elsewhere.
   std::vector<uint16_t> visible_cells;
   // Per page, texel -> element index or -1.
   std::vector<std::vector<int32_t>> element_at;
@@ -65,8 +69,16 @@ Elements build_elements(const Surface& surface, const MaterialSampler& materials
 // Moves samples that sit behind nearby geometry (a floor texel straddling a wall) to its front,
 // flags samples buried inside closed geometry, and records which neighbouring texels are not
 // separated by geometry, so no light or shadow leaks through a wall standing on a surface.
+// Likewise for covers: a texel across a cover's edge keeps only its sample's side, the area of
+// the other going to a neighbour on that side, and texels under a cover join none in the open, so
+// light in a gap (a double-sided lamp's back under the ceiling) stays there.
 void place_samples(Elements& elements, const Surface& surface, const RayTracer& tracer, uint64_t seed,
                    Progress& progress);
+
+// Whether another surface lies over `point` (on triangle `triangle`, lifted by its ray offset)
+// within a sixteenth of a texel along the triangle's normal: a gap so thin that its light stays in
+// it. Mixed with the open surface beside it, in a texel across its edge, it would be shone out.
+bool under_cover(const Surface& surface, const RayTracer& tracer, uint32_t triangle, Vec3 point);
 
 // The element whose texel holds point `bary` of `triangle` (buried ones included), or -1.
 int64_t element_at_point(const Elements& elements, const Surface& surface, uint32_t triangle, Vec2 bary);

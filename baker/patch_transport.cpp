@@ -20,25 +20,37 @@ bool sees(const RayTracer& tracer, Vec3 from, Vec3 to) {
 
 // The element that stands for a hit point. Where a wall crosses a texel, the texel's element
 // lies on one side only; a hit on the other side belongs to the neighbour on its own side (or to
-// nobody), never to the element behind the wall, or light would pass through the wall.
+// nobody), never to the element behind the wall, or light would pass through the wall. Likewise
+// across a cover's edge: a hit in the gap belongs to a texel under the cover, one in the open to a
+// texel in the open; where no neighbour holds the hit's side, the texel keeps it.
 int64_t element_for_hit(const Elements& e, const Surface& surface, const RayTracer& tracer, const Hit& hit) {
   int64_t j = element_at_point(e, surface, hit.triangle, hit.bary);
   if (j < 0 || !(e.flags[size_t(j)] & kNearGeometry)) return j;
-  const Vec3 at = surface.point(hit.triangle, hit.bary) + surface.normal[hit.triangle] * e.offset[size_t(j)];
-  auto lifted = [&](size_t k) { return e.position[k] + surface.normal[e.triangle[k]] * e.offset[k]; };
-  if (sees(tracer, at, lifted(size_t(j)))) return j;
   const uint32_t width = uint32_t(surface.pages[e.page[size_t(j)]].width);
   const std::vector<int32_t>& grid = e.element_at[e.page[size_t(j)]];
   const int64_t x = e.texel[size_t(j)] % width, y = e.texel[size_t(j)] / width, height = int64_t(grid.size() / width);
+  int32_t around[8];
+  int count = 0;
   for (int64_t dy = -1; dy <= 1; ++dy)
     for (int64_t dx = -1; dx <= 1; ++dx) {
       if ((dx == 0 && dy == 0) || x + dx < 0 || y + dy < 0 || x + dx >= width || y + dy >= height) continue;
       int32_t k = grid[size_t((y + dy) * width + x + dx)];
-      if (k >= 0 && e.valid(size_t(k)) && surface.chart[e.triangle[size_t(k)]] == surface.chart[hit.triangle] &&
-          sees(tracer, at, lifted(size_t(k))))
-        return k;
+      if (k >= 0 && surface.chart[e.triangle[size_t(k)]] == surface.chart[hit.triangle]) around[count++] = k;
     }
-  return -1;
+  const Vec3 at = surface.point(hit.triangle, hit.bary) + surface.normal[hit.triangle] * e.offset[size_t(j)];
+  auto lifted = [&](size_t k) { return e.position[k] + surface.normal[e.triangle[k]] * e.offset[k]; };
+  // Only where a cover's edge passes by (place_samples split the texels there) can the hit lie on
+  // the other side of one from j.
+  uint8_t side = e.flags[size_t(j)] & kUnderCover;
+  if (std::any_of(around, around + count, [&](int32_t k) { return (e.flags[size_t(k)] ^ side) & kUnderCover; }))
+    side = under_cover(surface, tracer, hit.triangle, at) ? kUnderCover : 0;
+  const bool sees_j = sees(tracer, at, lifted(size_t(j)));
+  if (sees_j && (e.flags[size_t(j)] & kUnderCover) == side) return j;
+  for (int k = 0; k < count; ++k)
+    if (e.valid(size_t(around[k])) && (e.flags[size_t(around[k])] & kUnderCover) == side &&
+        sees(tracer, at, lifted(size_t(around[k]))))
+      return around[k];
+  return sees_j ? j : -1;
 }
 
 }  // namespace

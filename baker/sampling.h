@@ -30,6 +30,7 @@ enum class Stream : uint64_t {
   Probe,
   Footprint,
   Hemicube,
+  Cover,
   PathTrace,
 };
 

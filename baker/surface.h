@@ -2,6 +2,7 @@
 // the element builder and the light sources all index by a single triangle number.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -39,6 +40,11 @@ struct Surface {
   Vec3 shading_normal(uint32_t t, Vec2 bary) const {
     return normalize(corner_normals[3 * t] * (1 - bary.x - bary.y) + corner_normals[3 * t + 1] * bary.x +
                      corner_normals[3 * t + 2] * bary.y);
+  }
+  // Metres per texel side on triangle t: its area over its area on the page, square-rooted.
+  float texel_size(uint32_t t) const {
+    const Vec2* c = &corner_lightmap[3 * t];
+    return std::sqrt(area[t] / (0.5f * std::fabs(cross2(c[1] - c[0], c[2] - c[0]))));
   }
   Vec2 lightmap_texel(uint32_t t, Vec2 bary) const {
     return corner_lightmap[3 * t] * (1 - bary.x - bary.y) + corner_lightmap[3 * t + 1] * bary.x +
