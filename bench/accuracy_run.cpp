@@ -102,10 +102,19 @@ size_t peak_memory_bytes() {
   return size_t(usage.ru_maxrss) * 1024;
 }
 
-std::vector<Rgb> read_values(const std::string& path, size_t count) {
+// A reference's values per element, as --write-reference wrote them: irradiance, and beside it
+// (".noise") a path-traced reference's standard errors.
+template <typename T>
+void write_per_texel(const std::string& path, const std::vector<T>& values) {
+  std::ofstream(path, std::ios::binary)
+      .write(reinterpret_cast<const char*>(values.data()), std::streamsize(values.size() * sizeof(T)));
+}
+
+template <typename T>
+std::vector<T> read_per_texel(const std::string& path, size_t count) {
   std::ifstream in(path, std::ios::binary);
-  std::vector<Rgb> values(count);
-  in.read(reinterpret_cast<char*>(values.data()), std::streamsize(count * sizeof(Rgb)));
+  std::vector<T> values(count);
+  in.read(reinterpret_cast<char*>(values.data()), std::streamsize(count * sizeof(T)));
   if (!in || in.peek() != EOF) throw std::runtime_error(path + " is not a reference for these texels");
   return values;
 }
@@ -125,14 +134,6 @@ std::vector<uint8_t> contact_texels(const Scene& scene, const Atlas& atlas, cons
       contact[i] = tracer.occluded(origin, hemisphere_direction(e.normal[i], ng, cmj_sample(k, kRays, 1)), 0.0f, distance);
   }
   return contact;
-}
-
-std::vector<float> read_noise(const std::string& path, size_t count) {
-  std::ifstream in(path, std::ios::binary);
-  std::vector<float> values(count);
-  in.read(reinterpret_cast<char*>(values.data()), std::streamsize(count * sizeof(float)));
-  if (!in || in.peek() != EOF) throw std::runtime_error(path + " is not a reference's noise for these texels");
-  return values;
 }
 
 int run(int argc, char** argv) {
@@ -160,18 +161,14 @@ int run(int argc, char** argv) {
 
   const Elements& e = result.elements;
   if (!write_reference.empty()) {
-    std::ofstream out(write_reference, std::ios::binary);
-    out.write(reinterpret_cast<const char*>(result.irradiance.data()), std::streamsize(e.size() * sizeof(Rgb)));
-    // A path-traced reference keeps its texels' standard errors beside it.
-    if (!result.standard_error.empty())
-      std::ofstream(write_reference + ".noise", std::ios::binary)
-          .write(reinterpret_cast<const char*>(result.standard_error.data()), std::streamsize(e.size() * sizeof(float)));
+    write_per_texel(write_reference, result.irradiance);
+    if (!result.standard_error.empty()) write_per_texel(write_reference + ".noise", result.standard_error);
   }
   std::vector<Rgb> exact;
   std::vector<float> reference_noise;
   if (!reference.empty()) {
-    exact = read_values(reference, e.size());
-    if (std::ifstream(reference + ".noise")) reference_noise = read_noise(reference + ".noise", e.size());
+    exact = read_per_texel<Rgb>(reference, e.size());
+    if (std::ifstream(reference + ".noise")) reference_noise = read_per_texel<float>(reference + ".noise", e.size());
   }
   else if (study.exact) {
     exact.resize(e.size());
