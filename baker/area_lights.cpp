@@ -67,14 +67,6 @@ Vec3 polygon_point(const Vec3* p, int count, Vec2 u, float* area) {
   return p[0] * (1 - b.x - b.y) + p[k] * b.x + p[k + 1] * b.y;
 }
 
-Vec2 triangle_bary(const Emitter& em, Vec3 y) {
-  Vec3 e1 = em.corner[1] - em.corner[0], e2 = em.corner[2] - em.corner[0], d = y - em.corner[0];
-  float d11 = dot(e1, e1), d12 = dot(e1, e2), d22 = dot(e2, e2), d1 = dot(d, e1), d2 = dot(d, e2);
-  float det = d11 * d22 - d12 * d12;
-  if (det == 0) return {1.0f / 3, 1.0f / 3};
-  return {(d22 * d1 - d12 * d2) / det, (d11 * d2 - d12 * d1) / det};
-}
-
 }  // namespace
 
 double polygon_form_factor(Vec3 x, Vec3 n, const Vec3* polygon, int count) {
@@ -185,7 +177,7 @@ std::vector<Rgb> emitter_irradiance(const Elements& e, const Surface& surface, c
           Vec3 d = target - origin;
           float dist = length(d);
           if (dist > 0 && options.shadow_rays && tracer.occluded(origin, d / dist, 0.0f, dist)) continue;
-          seen += (em.uniform ? em.emission : materials.emission(em.triangle, triangle_bary(em, y), 1.0f)) * float(weight);
+          seen += (em.uniform ? em.emission : materials.emission(em.triangle, barycentric(em.corner, y), 1.0f)) * float(weight);
         }
         if (weights > 0) h += seen * float(factor[k] / weights);
       }

@@ -105,4 +105,14 @@ struct Mat4 {
   }
 };
 
+// Barycentrics (b1, b2), the weights of corners 1 and 2, of a point in the plane of a triangle;
+// the centroid for a degenerate one.
+inline Vec2 barycentric(const Vec3* corners, Vec3 p) {
+  const Vec3 e1 = corners[1] - corners[0], e2 = corners[2] - corners[0], d = p - corners[0];
+  const float d11 = dot(e1, e1), d12 = dot(e1, e2), d22 = dot(e2, e2), d1 = dot(d, e1), d2 = dot(d, e2);
+  const float det = d11 * d22 - d12 * d12;
+  if (!(det > 0)) return {1.0f / 3, 1.0f / 3};
+  return {(d22 * d1 - d12 * d2) / det, (d11 * d2 - d12 * d1) / det};
+}
+
 }  // namespace radbake
