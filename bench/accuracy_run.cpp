@@ -3,13 +3,14 @@
 // JSON line with the bake's time, peak memory, and its error against the reference.
 //
 //   accuracy_run SCENE [radbake bake options] [--reference FILE | --write-reference FILE]
-//                [--contact-distance METRES]
+//                [--contact-distance METRES] [--dump-texels CSV]
 //
 // SCENE is furnace, emitter-over-floor or point-light-over-floor (built here, with closed-form
 // irradiance per texel) or a glTF file, whose reference is a bake written earlier with
 // --write-reference (the same density and page size give the same texels): a path-traced one
 // (--method pathtrace) also writes its texels' standard errors, and runs against it then report
-// their error with the reference's noise taken out.
+// their error with the reference's noise taken out. --dump-texels writes each compared texel's
+// position, normal, lux and reference lux (and its noise) for looking at regions.
 #include <sys/resource.h>
 
 #include <algorithm>
@@ -96,6 +97,14 @@ StudyScene study_scene(const std::string& name) {
   return s;
 }
 
+// User and system CPU time of this process so far, seconds: a bake's cost over all its threads.
+double cpu_seconds() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return double(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+         1e-6 * double(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+}
+
 size_t peak_memory_bytes() {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
@@ -139,12 +148,16 @@ std::vector<uint8_t> contact_texels(const Scene& scene, const Atlas& atlas, cons
 int run(int argc, char** argv) {
   if (argc < 2) throw std::runtime_error("usage: accuracy_run SCENE [bake options] [--reference F | --write-reference F]");
   std::vector<std::string> args = {"bake", argv[1], "-o", "unused"};
-  std::string reference, write_reference;
+  std::string reference, write_reference, dump_texels;
   float contact_distance = 0.02f;
   for (int i = 2; i < argc; ++i) {
     std::string a = argv[i];
     if (a == "--contact-distance" && i + 1 < argc) {
       contact_distance = std::stof(argv[++i]);
+      continue;
+    }
+    if (a == "--dump-texels" && i + 1 < argc) {
+      dump_texels = argv[++i];
       continue;
     }
     if ((a == "--reference" || a == "--write-reference") && i + 1 < argc) (a == "--reference" ? reference : write_reference) = argv[++i];
@@ -156,7 +169,9 @@ int run(int argc, char** argv) {
   Atlas atlas = ensure_lightmap_uvs(mesh_views(study.scene), cl.bake.atlas);
 
   auto start = std::chrono::steady_clock::now();
+  const double cpu_start = cpu_seconds();
   BakeResult result = bake(study.scene, atlas, cl.bake.bake);
+  const double cpu = cpu_seconds() - cpu_start;
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   const Elements& e = result.elements;
@@ -180,7 +195,7 @@ int run(int argc, char** argv) {
   double total = 0;
   for (size_t i = 0; i < e.size(); ++i)
     if (e.valid(i)) total += sum(result.irradiance[i]) / 3.0;
-  nlohmann::ordered_json line = {{"scene", argv[1]}, {"seconds", seconds}, {"solve_seconds", solve_seconds}, {"peak_memory_bytes", peak_memory_bytes()},
+  nlohmann::ordered_json line = {{"scene", argv[1]}, {"seconds", seconds}, {"cpu_seconds", cpu}, {"solve_seconds", solve_seconds}, {"peak_memory_bytes", peak_memory_bytes()},
                                  {"texels", result.report.valid_elements}, {"patches", result.report.patches},
                                  {"rays", result.report.rays}, {"energy_error", result.report.balance.relative_error},
                                  {"mean_lux", total / double(std::max<size_t>(1, result.report.valid_elements))}};
@@ -210,6 +225,15 @@ int run(int argc, char** argv) {
       line["contact_bias"] = contact_sum / contact_reference - 1;
       line["contact_rmse_noise_removed"] =
           std::sqrt(std::max(0.0, contact_squared - contact_noise) / double(contact_count)) / level;
+    }
+    if (!dump_texels.empty()) {
+      std::ofstream out(dump_texels);
+      out << "x,y,z,nx,ny,nz,lux,reference_lux,reference_noise_lux\n";
+      for (size_t i = 0; i < e.size(); ++i)
+        if (e.valid(i))
+          out << e.position[i].x << ',' << e.position[i].y << ',' << e.position[i].z << ',' << e.normal[i].x << ','
+              << e.normal[i].y << ',' << e.normal[i].z << ',' << sum(result.irradiance[i]) / 3 << ','
+              << sum(exact[i]) / 3 << ',' << (reference_noise.empty() ? 0.0f : reference_noise[i]) << '\n';
     }
     if (!reference_noise.empty()) {
       // The reference's own noise adds to the squared error of every texel in expectation (it is
