@@ -67,6 +67,12 @@ Vec3 polygon_point(const Vec3* p, int count, Vec2 u, float* area) {
   return p[0] * (1 - b.x - b.y) + p[k] * b.x + p[k + 1] * b.y;
 }
 
+Vec3 polygon_centroid(const Vec3* p, int count) {
+  Vec3 sum{};
+  for (int k = 0; k < count; ++k) sum += p[k];
+  return sum / float(count);
+}
+
 }  // namespace
 
 double polygon_form_factor(Vec3 x, Vec3 n, const Vec3* polygon, int count) {
@@ -143,42 +149,64 @@ std::vector<Rgb> emitter_irradiance(const Elements& e, const Surface& surface, c
           continue;
         }
         double share = factor[k] * sum(em.emission) / total;
-        int rays = std::clamp(int(std::ceil(budget * share)), least, options.area_light_rays);
-        uint32_t target_pattern = rng.next_u32(), origin_pattern = rng.next_u32();
+        const int rays = std::clamp(int(std::ceil(budget * share)), least, options.area_light_rays);
+        const uint32_t probe_patterns[2] = {rng.next_u32(), rng.next_u32()};
+        const uint32_t full_patterns[2] = {rng.next_u32(), rng.next_u32()};
         // The seen fraction: shadow rays from points of the texel to points of the emitter spread
         // by area, each weighted by the form factor kernel there, cos cos / r^2 times the area it
         // was drawn from. So it is the kernel's fraction, not the area's (a stand hiding the near
         // half of a floodlight hides most of its light), and exactly 1 when nothing is in the way.
         double weights = 0;
         Rgb seen{};
-        for (int j = 0; j < rays; ++j) {
-          const Vec3 from = footprint_point(e, surface, i, cmj_sample(uint32_t(j), uint32_t(rays), origin_pattern));
-          Vec3 polygon[4];
-          const int corners = visible_part(em, from, n, e.offset[i], polygon);
-          if (corners < 3) continue;
-          float area;
-          const Vec3 y = polygon_point(polygon, corners, cmj_sample(uint32_t(j), uint32_t(rays), target_pattern), &area);
-          const Vec3 to_y = y - from;
-          const double r2 = dot(to_y, to_y);
-          const double weight = std::max(0.0f, dot(n, to_y)) * std::max(0.0f, -dot(em.normal, to_y)) / (r2 * r2) * area;
-          if (!(weight > 0)) continue;
-          weights += weight;
-          const Vec3 origin = from + ng * e.offset[i];
-          // The ray ends just off the emitter, on the receiver's side: stopping a fraction short
-          // along the ray is not enough at grazing angles, where that point is still within
-          // rounding of the emitter's plane and the emitter would occlude itself.
-          Vec3 target = y + em.normal * std::max(e.offset[i], 1e-5f * length(y - origin));
-          // Nor may it end lower over the receiver's plane than the ray starts: a target in that
-          // plane (an emitter meeting the receiver at an edge, or a distant one that merely lies
-          // in the plane extended) would have the ray graze the receiver, or slip between a wall
-          // and the surface it stands on, past every wall in the way.
-          const float lift = e.offset[i] - dot(target - from, ng);
-          if (lift > 0) target += ng * lift;
-          Vec3 d = target - origin;
-          float dist = length(d);
-          if (dist > 0 && options.shadow_rays && tracer.occluded(origin, d / dist, 0.0f, dist)) continue;
-          seen += (em.uniform ? em.emission : materials.emission(em.triangle, barycentric(em.corner, y), 1.0f)) * float(weight);
-        }
+        int visible = 0, hidden = 0;
+        auto trace = [&](int count, const uint32_t* patterns) {
+          weights = 0;
+          seen = {};
+          visible = hidden = 0;
+          const uint32_t origin_pattern = patterns[0], target_pattern = patterns[1];
+          for (int j = 0; j < count; ++j) {
+            const Vec3 from = footprint_point(e, surface, i, cmj_sample(uint32_t(j), uint32_t(count), origin_pattern));
+            Vec3 polygon[4];
+            const int corners = visible_part(em, from, n, e.offset[i], polygon);
+            if (corners < 3) continue;
+            float area;
+            Vec3 y = polygon_point(polygon, corners, cmj_sample(uint32_t(j), uint32_t(count), target_pattern), &area);
+            // A hair inside the emitter's edges: where it meets a wall (a glowing ceiling), a ray
+            // to a point on the edge itself ends in the wall's plane and may strike it.
+            y += (polygon_centroid(polygon, corners) - y) * 1e-4f;
+            const Vec3 to_y = y - from;
+            const double r2 = dot(to_y, to_y);
+            const double weight = std::max(0.0f, dot(n, to_y)) * std::max(0.0f, -dot(em.normal, to_y)) / (r2 * r2) * area;
+            if (!(weight > 0)) continue;
+            weights += weight;
+            const Vec3 origin = from + ng * e.offset[i];
+            // The ray ends just off the emitter, on the receiver's side: stopping a fraction short
+            // along the ray is not enough at grazing angles, where that point is still within
+            // rounding of the emitter's plane and the emitter would occlude itself.
+            Vec3 target = y + em.normal * std::max(e.offset[i], 1e-5f * length(y - origin));
+            // Nor may it end lower over the receiver's plane than the ray starts: a target in that
+            // plane (an emitter meeting the receiver at an edge, or a distant one that merely lies
+            // in the plane extended) would have the ray graze the receiver, or slip between a wall
+            // and the surface it stands on, past every wall in the way.
+            const float lift = e.offset[i] - dot(target - from, ng);
+            if (lift > 0) target += ng * lift;
+            Vec3 d = target - origin;
+            float dist = length(d);
+            if (dist > 0 && options.shadow_rays && tracer.occluded(origin, d / dist, 0.0f, dist)) {
+              ++hidden;
+              continue;
+            }
+            ++visible;
+            seen += (em.uniform ? em.emission : materials.emission(em.triangle, barycentric(em.corner, y), 1.0f)) * float(weight);
+          }
+        };
+        // Rays go where the shadow's edge is: a quarter of them first, and all of them only when
+        // those disagree, the texel in a penumbra. At least 16 first: 4 of 16 missed the edge of a
+        // block's shadow across a texel often enough to raise the Cornell box's error from 1.3% to
+        // 1.7%.
+        const int probe = std::max(16, rays / 4);
+        if (probe < rays) trace(probe, probe_patterns);
+        if (probe >= rays || (visible > 0 && hidden > 0)) trace(rays, full_patterns);
         if (weights > 0) h += seen * float(factor[k] / weights);
       }
       irradiance[i] = h;
