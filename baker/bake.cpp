@@ -101,9 +101,15 @@ void interreflect(const Elements& elements, const Surface& surface, const RayTra
   check_patches("the radiosity solve", patches, light_between.transport, solution.exitance, checked);
   GatherStats gather_stats;
   StageClock clock(report.stage_times);
-  result.irradiance = clock.run("final gather", [&] {
+  GatheredLight gathered = clock.run("final gather", [&] {
     return gather_indirect(elements, patches, surface, tracer, solution.exitance, options.gather_rays, options.seed,
                            progress, &gather_stats);
+  });
+  result.irradiance = clock.run("gather filter", [&] {
+    std::vector<uint8_t> gathering(elements.size());
+    for (size_t i = 0; i < elements.size(); ++i) gathering[i] = patches.patch_of_element[i] != UINT32_MAX;
+    return filter_gathered(elements, surface, gathered.irradiance, gathered.harmonic_distance, gathering,
+                           options.gather_filter);
   });
   check_element_values("the final gather", result.irradiance, checked, patches.patch_of_element);
   for (size_t i = 0; i < elements.size(); ++i) result.irradiance[i] += result.direct[i];

@@ -11,6 +11,7 @@
 #include "baker/elements.h"
 #include "baker/energy_balance.h"
 #include "baker/finish.h"
+#include "baker/gather_filter.h"
 #include "baker/interreflection.h"
 #include "baker/path_tracer.h"
 #include "baker/patches.h"
@@ -45,6 +46,7 @@ struct BakeOptions {
   SubdivisionOptions subdivision;
   SolveOptions solve;
   uint32_t gather_rays = 256;   // hemisphere rays per texel for indirect light
+  GatherFilterOptions gather_filter;  // texel-space filtering of the gather's noise
   uint64_t seed = 1;            // same seed, same input: bit-identical output, whatever the thread count
   int threads = 0;              // 0: all cores
   StoredQuantity store = StoredQuantity::Irradiance;

@@ -2,17 +2,21 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <atomic>
+#include <cmath>
 
 #include "baker/patch_transport.h"
 #include "baker/sampling.h"
 
 namespace radbake {
 
-std::vector<Rgb> gather_indirect(const Elements& e, const Patches& patches, const Surface& surface,
+GatheredLight gather_indirect(const Elements& e, const Patches& patches, const Surface& surface,
                                  const RayTracer& tracer, const std::vector<Rgb>& patch_exitance, uint32_t rays,
                                  uint64_t seed, Progress& progress, GatherStats* stats) {
-  std::vector<Rgb> irradiance(e.size());
+  GatheredLight out;
+  out.irradiance.resize(e.size());
+  out.harmonic_distance.assign(e.size(), INFINITY);
   std::atomic<uint64_t> lost{0}, cast{0};
   progress.begin("final gather", e.size());
   tbb::parallel_for(tbb::blocked_range<size_t>(0, e.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
@@ -23,18 +27,20 @@ std::vector<Rgb> gather_indirect(const Elements& e, const Patches& patches, cons
       Rng rng(seed, Stream::Gather, i);
       const uint32_t origin_pattern = rng.next_u32(), direction_pattern = rng.next_u32();
       Rgb sum{};
+      double nearness = 0;  // sum of 1 / distance
       for (uint32_t k = 0; k < rays; ++k) {
         // Origins spread over the texel, as the form factor rays do: an element stands for its
         // whole footprint, and near a wall the footprint sees more of the wall than its centre.
         Vec3 origin = footprint_point(e, surface, i, cmj_sample(k, rays, origin_pattern)) + ng * e.offset[i];
         Vec3 dir = hemisphere_direction(e.normal[i], ng, cmj_sample(k, rays, direction_pattern));
-        bool escaped;
-        uint32_t q = patch_hit(e, patches, surface, tracer, origin, dir, escaped);
-        if (q != UINT32_MAX) sum += patch_exitance[q];
-        else my_lost += !escaped;
+        const Landing at = land(e, patches, surface, tracer, origin, dir);
+        if (!at.escaped) nearness += 1.0 / std::max(at.distance, 1e-6f);
+        if (at.patch != UINT32_MAX) sum += patch_exitance[at.patch];
+        else my_lost += !at.escaped;
       }
       // With cosine-distributed directions, irradiance is the mean exitance seen (E = pi * mean L).
-      irradiance[i] = sum / float(rays);
+      out.irradiance[i] = sum / float(rays);
+      if (nearness > 0) out.harmonic_distance[i] = float(double(rays) / nearness);
       my_cast += rays;
     }
     lost += my_lost;
@@ -43,7 +49,7 @@ std::vector<Rgb> gather_indirect(const Elements& e, const Patches& patches, cons
   });
   progress.end();
   if (stats) stats->back_face_fraction = cast ? double(lost) / double(cast) : 0.0;
-  return irradiance;
+  return out;
 }
 
 }  // namespace radbake

@@ -55,13 +55,23 @@ int64_t element_for_hit(const Elements& e, const Surface& surface, const RayTrac
 
 }  // namespace
 
+Landing land(const Elements& elements, const Patches& patches, const Surface& surface, const RayTracer& tracer,
+             Vec3 origin, Vec3 direction) {
+  const Hit hit = tracer.intersect(origin, direction, 0.0f, INFINITY);
+  Landing at;
+  at.escaped = hit.missed();
+  at.distance = at.escaped ? INFINITY : hit.distance;
+  if (at.escaped || !hit.front) return at;
+  const int64_t element = element_for_hit(elements, surface, tracer, hit);
+  if (element >= 0) at.patch = patches.patch_of_element[size_t(element)];
+  return at;
+}
+
 uint32_t patch_hit(const Elements& elements, const Patches& patches, const Surface& surface,
                    const RayTracer& tracer, Vec3 origin, Vec3 direction, bool& escaped) {
-  Hit hit = tracer.intersect(origin, direction, 0.0f, INFINITY);
-  escaped = hit.missed();
-  if (escaped || !hit.front) return UINT32_MAX;
-  int64_t element = element_for_hit(elements, surface, tracer, hit);
-  return element < 0 ? UINT32_MAX : patches.patch_of_element[size_t(element)];
+  const Landing at = land(elements, patches, surface, tracer, origin, direction);
+  escaped = at.escaped;
+  return at.patch;
 }
 
 namespace {

@@ -96,6 +96,16 @@ PatchTransport balanced_transport(const Patches& patches, const MeasuredRows& me
 // 0, 1, ..., n - 1: every patch.
 std::vector<uint32_t> all_patches(size_t n);
 
+// Where a ray from `origin` in `direction` lands: the patch it struck (UINT32_MAX for none: it left
+// the scene, or struck a back face or a buried texel) and how far away (infinite if it left).
+struct Landing {
+  uint32_t patch = UINT32_MAX;
+  float distance = 0;  // metres
+  bool escaped = false;
+};
+Landing land(const Elements& elements, const Patches& patches, const Surface& surface, const RayTracer& tracer,
+             Vec3 origin, Vec3 direction);
+
 // Where a ray from `origin` in `direction` lands: the patch it struck, or UINT32_MAX with
 // `escaped` telling whether it left the scene (else it struck a back face or a buried texel).
 uint32_t patch_hit(const Elements& elements, const Patches& patches, const Surface& surface,
