@@ -451,13 +451,12 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
   };
   atlas_options(b.atlas, with_value, flags);
   load_options(b.load, with_value, flags);
-  // The preset goes first wherever it stands, so options given with it override it.
+  // The preset (preview unless one is named) goes first wherever it stands, so options given with
+  // it override it.
   std::string quality = "preview";
   for (size_t i = 1; i + 1 < args.size(); ++i)
-    if (args[i] == "--quality") {
-      quality = args[i + 1];
-      apply_quality_preset(quality, b.bake);
-    }
+    if (args[i] == "--quality") quality = args[i + 1];
+  apply_quality_preset(quality, b.bake);
   bool help = false;
   parse_options(args, with_value, flags, [&](const std::string& arg) {
     if (!b.input.empty()) throw UsageError("unexpected argument '" + clipped(arg) + "' (one scene per bake)");
