@@ -102,8 +102,9 @@ void interreflect(const Elements& elements, const Surface& surface, const RayTra
   GatherStats gather_stats;
   StageClock clock(report.stage_times);
   GatheredLight gathered = clock.run("final gather", [&] {
-    return gather_indirect(elements, patches, surface, tracer, solution.exitance, options.gather_rays, options.seed,
-                           progress, &gather_stats);
+    return gather_indirect(elements, patches, surface, tracer, light_between.transport, solution.exitance,
+                           result.direct, options.gather_rays, options.near_field, options.seed, progress,
+                           &gather_stats);
   });
   result.irradiance = clock.run("gather filter", [&] {
     std::vector<uint8_t> gathering(elements.size());

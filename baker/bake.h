@@ -47,6 +47,7 @@ struct BakeOptions {
   SolveOptions solve;
   uint32_t gather_rays = 256;   // hemisphere rays per texel for indirect light
   GatherFilterOptions gather_filter;  // texel-space filtering of the gather's noise
+  bool near_field = true;       // gather rays landing close by take the texel's exitance (final_gather.h)
   uint64_t seed = 1;            // same seed, same input: bit-identical output, whatever the thread count
   int threads = 0;              // 0: all cores
   StoredQuantity store = StoredQuantity::Irradiance;

@@ -1,12 +1,18 @@
 // Indirect irradiance at texel resolution: each element gathers the solved patch exitance over
 // its hemisphere with stratified cosine-distributed rays. Emission is left out (direct light
-// already counts it), so the rays only carry light that surfaces reflect.
+// already counts it), so the rays only carry light that surfaces reflect. A ray landing nearer
+// than the struck patch is wide (the near field: a block's foot, a corner, a lamp close to a
+// ceiling) takes the struck texel's own exitance, its reflectance times its direct light plus the
+// patch's indirect, instead of the patch mean; what the near field takes beyond the mean, the
+// patch's far receivers get less of, in proportion to their far share of it (form factors less
+// the near field's share), so no light is made or lost.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
 #include "baker/elements.h"
+#include "baker/patch_transport.h"
 #include "baker/patches.h"
 #include "baker/progress.h"
 #include "baker/ray_tracer.h"
@@ -24,8 +30,11 @@ struct GatheredLight {
   std::vector<float> harmonic_distance;
 };
 
+// `patch_exitance`: the solve's reflected exitance per patch; `direct`: irradiance per element
+// from lights and emitters, lux; `near_field` false: every ray takes the patch mean.
 GatheredLight gather_indirect(const Elements& elements, const Patches& patches, const Surface& surface,
-                                 const RayTracer& tracer, const std::vector<Rgb>& patch_exitance, uint32_t rays,
-                                 uint64_t seed, Progress& progress, GatherStats* stats = nullptr);
+                              const RayTracer& tracer, const PatchTransport& transport,
+                              const std::vector<Rgb>& patch_exitance, const std::vector<Rgb>& direct, uint32_t rays,
+                              bool near_field, uint64_t seed, Progress& progress, GatherStats* stats = nullptr);
 
 }  // namespace radbake

@@ -63,7 +63,9 @@ Landing land(const Elements& elements, const Patches& patches, const Surface& su
   at.distance = at.escaped ? INFINITY : hit.distance;
   if (at.escaped || !hit.front) return at;
   const int64_t element = element_for_hit(elements, surface, tracer, hit);
-  if (element >= 0) at.patch = patches.patch_of_element[size_t(element)];
+  if (element < 0 || patches.patch_of_element[size_t(element)] == UINT32_MAX) return at;
+  at.element = uint32_t(element);
+  at.patch = patches.patch_of_element[at.element];
   return at;
 }
 

@@ -96,10 +96,11 @@ PatchTransport balanced_transport(const Patches& patches, const MeasuredRows& me
 // 0, 1, ..., n - 1: every patch.
 std::vector<uint32_t> all_patches(size_t n);
 
-// Where a ray from `origin` in `direction` lands: the patch it struck (UINT32_MAX for none: it left
-// the scene, or struck a back face or a buried texel) and how far away (infinite if it left).
+// Where a ray from `origin` in `direction` lands: the element and patch it struck (UINT32_MAX for
+// none: it left the scene, or struck a back face or a buried texel) and how far away (infinite if
+// it left).
 struct Landing {
-  uint32_t patch = UINT32_MAX;
+  uint32_t element = UINT32_MAX, patch = UINT32_MAX;
   float distance = 0;  // metres
   bool escaped = false;
 };

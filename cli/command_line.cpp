@@ -146,6 +146,9 @@ bake options:
   --seed N                random seed; same seed, same output (default 1)
   --store WHAT            irradiance (lux) | radiosity (lm/m2) per texel and vertex (default irradiance)
   --gather-rays N         hemisphere rays per texel for indirect light, 1..1048576 (default 64)
+  --no-near-field         gather rays landing nearer than the struck patch is wide take the
+                          patch's mean like the others, not the struck texel's own light (for
+                          measuring what the near field does; docs/accuracy.md)
   --gather-filter N       average each texel's gathered light with its neighbours up to N texels
                           away on the same surface, closing in where other surfaces are near;
                           0..16, 0 = off (default 3)
@@ -447,6 +450,7 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
       {"--debug-dumps", [&] { b.debug_dumps = true; }},
       {"--no-ambient", [&] { b.bake.solve.ambient_term = false; }},
       {"--direct-only", [&] { b.bake.plan.direct_only = true; }},
+      {"--no-near-field", [&] { b.bake.near_field = false; }},
       {"--simulate-everything", [&] { b.bake.plan.simulate_everything = true; }},
   };
   atlas_options(b.atlas, with_value, flags);
@@ -514,6 +518,7 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
       {"emission-scale", number(b.bake.emission_scale)},
       {"ambient", b.bake.solve.ambient_term ? "yes" : "no"},
       {"direct-only", b.bake.plan.direct_only ? "yes" : "no"},
+      {"near-field", b.bake.near_field ? "yes" : "no"},
       {"simulate-everything", b.bake.plan.simulate_everything ? "yes" : "no"},
       {"rotate-charts", b.atlas.rotate_charts ? "yes" : "no"},
       {"fit-page", b.atlas.fit_one_page ? "yes" : "no"},
