@@ -114,8 +114,7 @@ void interreflect(const Elements& elements, const Surface& surface, const RayTra
   });
   check_element_values("the final gather", result.irradiance, checked, patches.patch_of_element);
   for (size_t i = 0; i < elements.size(); ++i) result.irradiance[i] += result.direct[i];
-  report.balance = energy_balance(elements, patches, light_between.transport, solution.exitance, punctual_power,
-                                  result.irradiance);
+  report.balance = energy_balance(elements, patches, light_between.transport, punctual_power, result.irradiance);
 
   report.patches = patches.size();
   report.patch_block_size = patches.block_size;

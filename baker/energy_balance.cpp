@@ -6,21 +6,24 @@ double mean(Rgb v) { return (double(v.x) + v.y + v.z) / 3.0; }
 }  // namespace
 
 EnergyBalance energy_balance(const Elements& e, const Patches& patches, const PatchTransport& transport,
-                             const std::vector<Rgb>& patch_reflected_exitance, double punctual_power,
-                             const std::vector<Rgb>& irradiance) {
+                             double punctual_power, const std::vector<Rgb>& irradiance) {
   EnergyBalance b;
   b.measured = true;
   b.emitted = punctual_power;
+  // What each patch's texels send out, emitted and reflected, from the final irradiance: the near
+  // field and the final gather change what texels reflect after the patch solve.
+  std::vector<double> leaving(patches.size(), 0);
   for (size_t i = 0; i < e.size(); ++i) {
     if (!e.valid(i)) continue;
     b.emitted += mean(e.emission[i]) * e.area[i];
     Rgb absorbed = (Rgb{1, 1, 1} - e.reflectance[i]) * irradiance[i];
     b.absorbed += mean(absorbed) * e.area[i];
+    if (patches.patch_of_element[i] != UINT32_MAX)
+      leaving[patches.patch_of_element[i]] += mean(e.emission[i] + e.reflectance[i] * irradiance[i]) * e.area[i];
   }
   for (size_t q = 0; q < patches.size(); ++q) {
-    double leaving = mean(patches.emission[q] + patch_reflected_exitance[q]) * patches.area[q];
-    b.escaped += leaving * transport.escaped[q];
-    b.lost += leaving * transport.lost[q];
+    b.escaped += leaving[q] * transport.escaped[q];
+    b.lost += leaving[q] * transport.lost[q];
   }
   b.relative_error = b.emitted > 0 ? (b.emitted - b.absorbed - b.escaped - b.lost) / b.emitted : 0.0;
   return b;

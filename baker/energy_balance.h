@@ -22,8 +22,9 @@ struct EnergyBalance {
   bool measured = false;  // false when the plan skipped interreflection: no ray measured what escapes
 };
 
+// `irradiance`: the final light per element, lux; what leaves each patch is its elements' emission
+// plus their reflectance times this.
 EnergyBalance energy_balance(const Elements& elements, const Patches& patches, const PatchTransport& transport,
-                             const std::vector<Rgb>& patch_reflected_exitance, double punctual_power,
-                             const std::vector<Rgb>& irradiance);
+                             double punctual_power, const std::vector<Rgb>& irradiance);
 
 }  // namespace radbake

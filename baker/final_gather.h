@@ -1,11 +1,11 @@
 // Indirect irradiance at texel resolution: each element gathers the solved patch exitance over
 // its hemisphere with stratified cosine-distributed rays. Emission is left out (direct light
-// already counts it), so the rays only carry light that surfaces reflect. A ray landing nearer
-// than the struck patch is wide (the near field: a block's foot, a corner, a lamp close to a
-// ceiling) takes the struck texel's own exitance, its reflectance times its direct light plus the
-// patch's indirect, instead of the patch mean; what the near field takes beyond the mean, the
-// patch's far receivers get less of, in proportion to their far share of it (form factors less
-// the near field's share), so no light is made or lost.
+// already counts it), so the rays only carry light that surfaces reflect. A ray landing within
+// three widths of the struck patch (the near field: a block's foot, a corner, a lamp close to a
+// ceiling) takes the struck texel's own exitance, its reflectance times its direct light plus its
+// own gathered indirect light (solved together with its neighbours'), instead of the patch mean;
+// what the near field takes beyond the mean, the patch's far receivers get less of, in proportion
+// to their far share of it (form factors less the near field's share), so no light is made or lost.
 #pragma once
 
 #include <cstdint>

@@ -263,11 +263,12 @@ PathTraced path_trace(const Elements& e, const Surface& surface, const MaterialS
   const uint32_t batches = std::min(kBatches, std::max<uint32_t>(2, options.samples));
   const uint32_t per_batch = std::max<uint32_t>(2, options.samples) / batches, n = batches * per_batch;
   std::atomic<uint64_t> total_bounces{0};
+  auto traced = [&](size_t i) { return e.valid(i) && (options.only.empty() || options.only[i]); };
   progress.begin("path tracing", e.size());
   tbb::parallel_for(tbb::blocked_range<size_t>(0, e.size(), 16), [&](const tbb::blocked_range<size_t>& r) {
     uint64_t bounces = 0;
     for (size_t i = r.begin(); i < r.end(); ++i) {
-      if (!e.valid(i)) continue;
+      if (!traced(i)) continue;
       Rng rng(seed, Stream::PathTrace, i);
       double sum_rgb[3] = {0, 0, 0}, sum_squares = 0;
       for (uint32_t b = 0; b < batches; ++b) {
@@ -298,7 +299,7 @@ PathTraced path_trace(const Elements& e, const Surface& surface, const MaterialS
   double sum_values = 0, sum_squared_errors = 0;
   size_t valid = 0;
   for (size_t i = 0; i < e.size(); ++i) {
-    if (!e.valid(i)) continue;
+    if (!traced(i)) continue;
     ++valid;
     sum_values += double(sum(out.irradiance[i])) / 3;
     sum_squared_errors += double(out.standard_error[i]) * out.standard_error[i];

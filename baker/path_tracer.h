@@ -22,17 +22,20 @@ namespace radbake {
 struct PathTraceOptions {
   uint32_t samples = 1024;  // paths per texel, rounded down to a multiple of 8 (the batches the
                             // noise is estimated from); the noise falls as 1 / sqrt(samples)
+  // Per element, nonzero: traced; empty: every element. The others stay 0: a reference for a few
+  // regions can afford many more paths than one for the whole page.
+  std::vector<uint8_t> only;
 };
 
 struct PathTraced {
-  std::vector<Rgb> irradiance;        // per element, lux (0 for buried elements)
+  std::vector<Rgb> irradiance;        // per element, lux (0 for buried elements and those not traced)
   std::vector<float> standard_error;  // per element, lux: of the mean over RGB, from its batches' spread
   uint32_t samples = 0;               // paths per texel traced
   // The noise estimate: the RMS of the texels' standard errors over the mean irradiance of the
   // valid texels, which is what the noise adds to a relative RMSE measured against these values
   // (radbake diff divides by the reference's mean texel value the same way).
   double relative_noise = 0;
-  double mean_irradiance = 0;         // lux, mean over valid elements and over RGB
+  double mean_irradiance = 0;         // lux, mean over the valid elements traced and over RGB
   double mean_path_vertices = 0;      // surface hits per path, the first included
 };
 

@@ -3,14 +3,15 @@
 // JSON line with the bake's time, peak memory, and its error against the reference.
 //
 //   accuracy_run SCENE [radbake bake options] [--reference FILE | --write-reference FILE]
-//                [--contact-distance METRES] [--dump-texels CSV]
+//                [--contact-distance METRES] [--dump-texels CSV] [--cornell-regions]
 //
 // SCENE is furnace, emitter-over-floor or point-light-over-floor (built here, with closed-form
 // irradiance per texel) or a glTF file, whose reference is a bake written earlier with
 // --write-reference (the same density and page size give the same texels): a path-traced one
 // (--method pathtrace) also writes its texels' standard errors, and runs against it then report
 // their error with the reference's noise taken out. --dump-texels writes each compared texel's
-// position, normal, lux and reference lux (and its noise) for looking at regions.
+// position, normal, lux and reference lux (and its noise) for looking at regions;
+// --cornell-regions adds the Cornell box's contact regions (tests/support/cornell_regions.h).
 #include <sys/resource.h>
 
 #include <algorithm>
@@ -30,6 +31,7 @@
 #include "baker/surface.h"
 #include "cli/command_line.h"
 #include "io/gltf.h"
+#include "support/cornell_regions.h"
 #include "support/scene_builders.h"
 
 namespace radbake {
@@ -150,8 +152,13 @@ int run(int argc, char** argv) {
   std::vector<std::string> args = {"bake", argv[1], "-o", "unused"};
   std::string reference, write_reference, dump_texels;
   float contact_distance = 0.02f;
+  bool cornell_regions = false;
   for (int i = 2; i < argc; ++i) {
     std::string a = argv[i];
+    if (a == "--cornell-regions") {
+      cornell_regions = true;
+      continue;
+    }
     if (a == "--contact-distance" && i + 1 < argc) {
       contact_distance = std::stof(argv[++i]);
       continue;
@@ -225,6 +232,11 @@ int run(int argc, char** argv) {
       line["contact_bias"] = contact_sum / contact_reference - 1;
       line["contact_rmse_noise_removed"] =
           std::sqrt(std::max(0.0, contact_squared - contact_noise) / double(contact_count)) / level;
+    }
+    if (cornell_regions) {
+      line["regions"] = nlohmann::json::array();
+      for (const test::RegionBias& r : test::cornell_region_biases(e, result.irradiance, exact, reference_noise))
+        line["regions"].push_back({{"region", r.name}, {"texels", r.texels}, {"bias", r.bias}, {"noise", r.noise}});
     }
     if (!dump_texels.empty()) {
       std::ofstream out(dump_texels);

@@ -146,8 +146,8 @@ bake options:
   --seed N                random seed; same seed, same output (default 1)
   --store WHAT            irradiance (lux) | radiosity (lm/m2) per texel and vertex (default irradiance)
   --gather-rays N         hemisphere rays per texel for indirect light, 1..1048576 (default 64)
-  --no-near-field         gather rays landing nearer than the struck patch is wide take the
-                          patch's mean like the others, not the struck texel's own light (for
+  --no-near-field         gather rays landing within three widths of the struck patch take
+                          the patch's mean like the others, not the struck texel's own light (for
                           measuring what the near field does; docs/accuracy.md)
   --gather-filter N       average each texel's gathered light with its neighbours up to N texels
                           away on the same surface, closing in where other surfaces are near;
