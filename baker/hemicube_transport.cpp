@@ -127,7 +127,7 @@ PatchTransport hemicube_patch_transport(const Elements& elements, const Patches&
   rows.resize(patches.size());
   measure_hemicube_rows(elements, patches, surface, tracer, resolution, all_patches(patches.size()), seed, progress,
                         rows);
-  return balanced_transport(patches, rows);
+  return balanced_transport(patches, std::move(rows));
 }
 
 }  // namespace radbake

@@ -189,13 +189,15 @@ Interreflection solve_interreflection(const Elements& elements, const Surface& s
     auto start = std::chrono::steady_clock::now();
     measure(elements, out.patches, surface, tracer, form_factors, power, which, seed, progress, rows);
     resolve_pending(out.patches, pieces, pending, rows);
-    out.transport = balanced_transport(out.patches, rows);
+    // Only another round reads the measured rows again: the last hands them over to be freed.
+    const bool last_round = subdivision.tolerance <= 0 || round >= subdivision.max_rounds;
+    out.transport = balanced_transport(out.patches, last_round ? std::move(rows) : MeasuredRows(rows));
     out.form_factor_seconds += seconds_since(start);
     start = std::chrono::steady_clock::now();
     out.solution = solve_radiosity(out.patches, out.transport, patch_direct, solve, progress, solve_observer);
     out.solve_seconds += seconds_since(start);
     out.rounds.push_back({out.patches.size(), 0});
-    if (subdivision.tolerance <= 0 || round >= subdivision.max_rounds) break;
+    if (last_round) break;
 
     std::vector<uint8_t> split =
         patches_to_split(elements, surface, out.patches, out.solution.exitance, subdivision.tolerance);

@@ -93,34 +93,71 @@ namespace {
 // scaled down to it: such a pair stays slightly unreciprocal, but no light is created.
 constexpr double kMaxScale = 64;
 
-void balance_reciprocity(const Patches& patches, std::vector<std::vector<std::pair<uint32_t, float>>>& rows) {
+// One half of A_p F_pq or of A_q F_qp, on row p of the symmetric exchange matrix G.
+struct Exchange {
+  uint32_t patch;
+  float half;
+  bool operator<(const Exchange& o) const { return patch < o.patch || (patch == o.patch && half < o.half); }
+};
+
+// G in compressed rows, built in place with no row of its own (a million-texel bake has 40,000
+// patches of a thousand targets each: vectors per row, doubling as they grow, took gigabytes).
+struct ExchangeMatrix {
+  std::vector<uint64_t> start;
+  std::vector<Exchange> entries;
+};
+
+ExchangeMatrix symmetric_exchange(const Patches& patches, const std::vector<MeasuredRow>& rows) {
+  const size_t n = rows.size();
+  ExchangeMatrix g;
+  g.start.assign(n + 1, 0);
+  for (size_t p = 0; p < n; ++p)
+    for (auto [q, f] : rows[p]) ++g.start[p + 1], ++g.start[q + 1];
+  for (size_t p = 0; p < n; ++p) g.start[p + 1] += g.start[p];
+  g.entries.resize(g.start[n]);
+  std::vector<uint64_t> fill(g.start.begin(), g.start.end() - 1);
+  for (size_t p = 0; p < n; ++p)
+    for (auto [q, f] : rows[p]) {
+      const float half = float(0.5 * double(patches.area[p]) * f);
+      g.entries[fill[p]++] = {q, half};
+      g.entries[fill[q]++] = {uint32_t(p), half};
+    }
+  // Merge the two halves of each pair, compacting the rows towards the front.
+  uint64_t w = 0;
+  for (size_t p = 0; p < n; ++p) {
+    const uint64_t begin = g.start[p], end = g.start[p + 1];
+    std::sort(g.entries.begin() + std::ptrdiff_t(begin), g.entries.begin() + std::ptrdiff_t(end));
+    g.start[p] = w;
+    for (uint64_t k = begin; k < end; ++k) {
+      if (w > g.start[p] && g.entries[w - 1].patch == g.entries[k].patch) g.entries[w - 1].half += g.entries[k].half;
+      else g.entries[w++] = g.entries[k];
+    }
+  }
+  g.start[n] = w;
+  g.entries.resize(w);
+  return g;
+}
+
+// Writes the balanced rows into `out`, F_pq = d_p G_pq d_q / A_p, and frees the measured rows as
+// soon as G holds them (at a million texels each takes hundreds of MB).
+void balance_reciprocity(const Patches& patches, std::vector<MeasuredRow>&& rows, PatchTransport& out) {
   const size_t n = rows.size();
   auto area = [&](size_t p) { return patches.area[p]; };
   std::vector<double> target(n, 0);
-  std::vector<std::vector<std::pair<uint32_t, double>>> g(n);
   for (size_t p = 0; p < n; ++p)
-    for (auto [q, f] : rows[p]) {
-      double half = 0.5 * double(area(p)) * f;
-      target[p] += 2 * half;
-      g[p].emplace_back(q, half);
-      g[q].emplace_back(uint32_t(p), half);
-    }
-  for (auto& row : g) {  // merge the two halves of each pair
-    std::sort(row.begin(), row.end());
-    size_t w = 0;
-    for (size_t k = 0; k < row.size(); ++k) {
-      if (w > 0 && row[w - 1].first == row[k].first) row[w - 1].second += row[k].second;
-      else row[w++] = row[k];
-    }
-    row.resize(w);
-  }
+    for (auto [q, f] : rows[p]) target[p] += double(area(p)) * f;
+  const ExchangeMatrix g = symmetric_exchange(patches, rows);
+  std::vector<MeasuredRow>().swap(rows);
+  auto row = [&](size_t p) {
+    return std::make_pair(g.entries.begin() + std::ptrdiff_t(g.start[p]), g.entries.begin() + std::ptrdiff_t(g.start[p + 1]));
+  };
   std::vector<double> d(n, 1.0);
   for (int iteration = 0; iteration < 500; ++iteration) {
     double worst = 0;
     for (size_t p = 0; p < n; ++p) {
       if (target[p] <= 0) continue;
       double sum = 0;
-      for (auto [q, v] : g[p]) sum += v * d[q];
+      for (auto [it, end] = row(p); it != end; ++it) sum += double(it->half) * d[it->patch];
       double r = d[p] * sum;
       if (r <= 0) continue;
       worst = std::max(worst, std::fabs(r / target[p] - 1));
@@ -128,13 +165,25 @@ void balance_reciprocity(const Patches& patches, std::vector<std::vector<std::pa
     }
     if (worst < 1e-7) break;
   }
+  std::vector<double> excess(n, 1.0);  // over the convergence tolerance: scaled down to what was measured
+  uint64_t kept = 0;
   for (size_t p = 0; p < n; ++p) {
-    rows[p].clear();
     if (target[p] <= 0 || area(p) <= 0) continue;
     double sum = 0;
-    for (auto [q, v] : g[p]) sum += d[p] * v * d[q];
-    const double excess = sum > target[p] * (1 + 1e-6) ? sum / target[p] : 1.0;  // over the convergence tolerance
-    for (auto [q, v] : g[p]) rows[p].emplace_back(q, float(d[p] * v * d[q] / excess / area(p)));
+    for (auto [it, end] = row(p); it != end; ++it) sum += d[p] * it->half * d[it->patch];
+    if (sum > target[p] * (1 + 1e-6)) excess[p] = sum / target[p];
+    kept += g.start[p + 1] - g.start[p];
+  }
+  out.row_start.assign(n + 1, 0);
+  out.target.reserve(kept);
+  out.form_factor.reserve(kept);
+  for (size_t p = 0; p < n; ++p) {
+    if (target[p] > 0 && area(p) > 0)
+      for (auto [it, end] = row(p); it != end; ++it) {
+        out.target.push_back(it->patch);
+        out.form_factor.push_back(float(d[p] * it->half * d[it->patch] / excess[p] / area(p)));
+      }
+    out.row_start[p + 1] = out.target.size();
   }
 }
 
@@ -170,23 +219,12 @@ std::vector<uint32_t> all_patches(size_t n) {
   return which;
 }
 
-PatchTransport balanced_transport(const Patches& patches, const MeasuredRows& measured) {
-  const size_t n = patches.size();
-  std::vector<std::vector<std::pair<uint32_t, float>>> rows = measured.rows;
-  balance_reciprocity(patches, rows);
+PatchTransport balanced_transport(const Patches& patches, MeasuredRows measured) {
   PatchTransport out;
-  out.escaped = measured.escaped;
-  out.lost = measured.lost;
-  out.rays = measured.rays;
-  out.row_start.assign(n + 1, 0);
-  for (size_t p = 0; p < n; ++p) {
-    for (auto [q, f] : rows[p]) {
-      out.target.push_back(q);
-      out.form_factor.push_back(f);
-    }
-    rows[p] = {};
-    out.row_start[p + 1] = out.target.size();
-  }
+  out.escaped = std::move(measured.escaped);
+  out.lost = std::move(measured.lost);
+  out.rays = std::move(measured.rays);
+  balance_reciprocity(patches, std::move(measured.rows), out);
   return out;
 }
 
@@ -256,7 +294,7 @@ PatchTransport trace_patch_transport(const Elements& elements, const Patches& pa
   rows.resize(patches.size());
   measure_ray_cast_rows(elements, patches, surface, tracer, rays_per_patch, power, all_patches(patches.size()), seed,
                         progress, rows);
-  return balanced_transport(patches, rows);
+  return balanced_transport(patches, std::move(rows));
 }
 
 }  // namespace radbake

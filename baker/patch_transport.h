@@ -37,8 +37,10 @@ struct Enclosures {
 Enclosures find_enclosures(const PatchTransport& transport);
 
 // Rows F(p -> q) as measured, before reciprocity: what adaptive subdivision keeps between rounds.
+using MeasuredRow = std::vector<std::pair<uint32_t, float>>;  // (target patch, F) by target
+
 struct MeasuredRows {
-  std::vector<std::vector<std::pair<uint32_t, float>>> rows;  // per patch, by target patch
+  std::vector<MeasuredRow> rows;  // per patch
   std::vector<float> escaped, lost;
   std::vector<uint32_t> rays;
 
@@ -90,8 +92,9 @@ PatchTransport trace_patch_transport(const Elements& elements, const Patches& pa
                                      const std::vector<double>& power, uint64_t seed, Progress& progress);
 
 // Measured rows made reciprocal (A_p F_pq = A_q F_qp) with every row still summing to what it
-// measured landing, and compressed.
-PatchTransport balanced_transport(const Patches& patches, const MeasuredRows& measured);
+// measured landing, and compressed. Takes the rows by value: a caller done with them moves them in
+// and the balance frees them early.
+PatchTransport balanced_transport(const Patches& patches, MeasuredRows measured);
 
 // 0, 1, ..., n - 1: every patch.
 std::vector<uint32_t> all_patches(size_t n);
