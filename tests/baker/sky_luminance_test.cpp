@@ -1,0 +1,59 @@
+// Sky luminance distributions against the values the issue gives for ISO 15469's standard skies
+// and the closed forms of the uniform and traditional overcast skies.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "baker/sky_luminance.h"
+
+namespace radbake {
+namespace {
+
+double radians(double degrees) { return degrees * M_PI / 180; }
+
+SkyDistribution cie(int type) { return {SkyModel::CieGeneral, type}; }
+
+TEST(SkyLuminance, CieStandardSkiesMatchTheReferenceValues) {
+  // Z = 45 degrees, alpha = 180, sun at Zs = 30, alpha_s = 0. The values are given to 7 digits:
+  // 1e-6 bounds their rounding.
+  EXPECT_NEAR(relative_sky_luminance(cie(1), radians(45), radians(180), radians(30), 0), 0.8325846, 1e-6);
+  EXPECT_NEAR(relative_sky_luminance(cie(12), radians(45), radians(180), radians(30), 0), 0.4544524, 1e-6);
+}
+
+TEST(SkyLuminance, EveryTypeIsOneAtTheZenithAndDarkBelowTheHorizon) {
+  for (int type = 1; type <= 15; ++type) {
+    // At the zenith the formula's numerator and denominator are the same product: 1 to rounding.
+    EXPECT_NEAR(relative_sky_luminance(cie(type), 0, 0, radians(40), radians(120)), 1.0, 1e-12) << type;
+    EXPECT_EQ(relative_sky_luminance(cie(type), radians(95), 0, radians(40), radians(120)), 0.0) << type;
+    EXPECT_GT(relative_sky_luminance(cie(type), radians(89.9), radians(10), radians(40), radians(120)), 0.0) << type;
+  }
+}
+
+TEST(SkyLuminance, ClearSkiesAreBrightestTowardTheSunOvercastOnesAtTheZenith) {
+  const double sun_zenith = radians(50), sun_azimuth = radians(180);
+  // Type 12 (CIE clear): 10 degrees from the sun is brighter than the zenith; the opposite side
+  // of the vault at the same height is darker than the zenith.
+  EXPECT_GT(relative_sky_luminance(cie(12), radians(40), radians(180), sun_zenith, sun_azimuth), 1.0);
+  EXPECT_LT(relative_sky_luminance(cie(12), radians(50), 0, sun_zenith, sun_azimuth), 1.0);
+  // Type 1 (overcast, steep gradation): no azimuth dependence, darker toward the horizon.
+  EXPECT_DOUBLE_EQ(relative_sky_luminance(cie(1), radians(60), 0, sun_zenith, sun_azimuth),
+                   relative_sky_luminance(cie(1), radians(60), radians(180), sun_zenith, sun_azimuth));
+  EXPECT_LT(relative_sky_luminance(cie(1), radians(80), 0, sun_zenith, sun_azimuth), 0.5);
+}
+
+TEST(SkyLuminance, HorizontalIlluminanceOfTheClosedFormSkies) {
+  // E_h = integral of L cos Z over the vault: pi L for a uniform sky, 7 pi / 9 L_z for the
+  // traditional overcast sky (Moon and Spencer). 1e-5 bounds the quadrature's error.
+  EXPECT_NEAR(horizontal_illuminance_over_zenith_luminance({SkyModel::Uniform, 0}, 0, 0) / M_PI, 1.0, 1e-5);
+  EXPECT_NEAR(horizontal_illuminance_over_zenith_luminance({SkyModel::CieOvercast, 0}, 0, 0) / (7 * M_PI / 9), 1.0,
+              1e-5);
+  EXPECT_NEAR(relative_sky_luminance({SkyModel::CieOvercast, 0}, radians(90) - 1e-9, 0, 0, 0), 1.0 / 3, 1e-8);
+}
+
+TEST(SkyLuminance, ATypeOutsideOneToFifteenIsRefused) {
+  EXPECT_THROW(relative_sky_luminance(cie(0), 0.1, 0, 0.5, 0), std::invalid_argument);
+  EXPECT_THROW(relative_sky_luminance(cie(16), 0.1, 0, 0.5, 0), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace radbake
