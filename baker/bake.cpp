@@ -145,10 +145,16 @@ void compute_radiosity(const Scene& scene, const Elements& elements, const Surfa
   std::vector<Rgb> punctual = clock.run("punctual lights", [&] {
     return punctual_irradiance(elements, surface, scene.lights, tracer, direct, options.seed, progress);
   });
+  if (options.sky.enabled) {
+    const std::vector<Rgb> sky = clock.run("sky", [&] {
+      return sky_irradiance(elements, surface, tracer, options.sky, options.seed, progress);
+    });
+    for (size_t i = 0; i < elements.size(); ++i) punctual[i] += sky[i];
+  }
   result.direct = clock.run("area lights", [&] {
     return emitter_irradiance(elements, surface, materials, tracer, direct, options.seed, progress);
   });
-  double punctual_power = 0;  // lm, mean of RGB, landing on valid elements
+  double punctual_power = 0;  // lm, mean of RGB, that punctual lights and the sky land on valid elements
   for (size_t i = 0; i < elements.size(); ++i) {
     if (elements.valid(i)) punctual_power += double(sum(punctual[i])) / 3.0 * elements.area[i];
     result.direct[i] += punctual[i];
@@ -167,7 +173,9 @@ void compute_radiosity(const Scene& scene, const Elements& elements, const Surfa
 
 BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& options,
                 const ProgressCallback& on_progress, const PreviewCallback& on_preview) {
-  return bake(scene, atlas, options, plan_effects(scene, options.plan), on_progress, on_preview);
+  PlanOptions plan = options.plan;
+  plan.sky = options.sky.enabled;
+  return bake(scene, atlas, options, plan_effects(scene, plan), on_progress, on_preview);
 }
 
 BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& options, const EffectPlan& plan,
@@ -213,6 +221,7 @@ BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& optio
   report.plan = plan.decisions;
   report.warnings = plan.warnings;
   if (options.method == Method::PathTrace) {
+    if (options.sky.enabled) throw InputError("the path tracer does not trace a sky yet: bake it with radiosity");
     PathTraced traced = clock.run("path tracing", [&] {
       return path_trace(elements, surface, materials, scene.lights, *tracer, options.path_trace, options.seed, progress);
     });

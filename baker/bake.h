@@ -18,6 +18,7 @@
 #include "baker/plan.h"
 #include "baker/progress.h"
 #include "baker/scene.h"
+#include "baker/sky_light.h"
 #include "baker/solve_radiosity.h"
 #include "uv/atlas.h"
 
@@ -48,6 +49,7 @@ struct BakeOptions {
   uint32_t gather_rays = 256;   // hemisphere rays per texel for indirect light
   GatherFilterOptions gather_filter;  // texel-space filtering of the gather's noise
   bool near_field = true;       // gather rays landing close by take the texel's exitance (final_gather.h)
+  SkyLight sky;                 // a sky lighting the scene besides its lamps (sky_light.h); radiosity only
   uint64_t seed = 1;            // same seed, same input: bit-identical output, whatever the thread count
   int threads = 0;              // 0: all cores
   StoredQuantity store = StoredQuantity::Irradiance;

@@ -14,7 +14,7 @@ namespace radbake {
 // Powers in lumens, the mean of the RGB channels.
 struct EnergyBalance {
   double emitted = 0;     // by emitting surfaces (a double-sided one's back-face twin is a surface
-                          // of its own), plus what punctual lights deliver onto surfaces
+                          // of its own), plus what punctual lights and the sky deliver onto surfaces
   double absorbed = 0;    // by front faces: (1 - rho) * irradiance * area over all elements
   double escaped = 0;     // left the scene
   double lost = 0;        // struck back faces (absorbed there) or texels buried inside geometry

@@ -227,9 +227,10 @@ EffectPlan plan_effects(const Scene& scene, const PlanOptions& options) {
     if (light.range > 0) why += " within its range of " + metres(light.range);
     decide(light_name(scene, l), "culled: no shadow rays", why);
   }
-  if (emitting.empty() && scene.lights.empty())
+  if (emitting.empty() && scene.lights.empty() && !options.sky)
     throw InputError("nothing in the scene emits light: no KHR_lights_punctual light and no emissive material");
-  if (emitting.empty() && std::none_of(plan.light_traced.begin(), plan.light_traced.end(), [](uint8_t t) { return t; }))
+  if (emitting.empty() && !options.sky &&
+      std::none_of(plan.light_traced.begin(), plan.light_traced.end(), [](uint8_t t) { return t; }))
     throw InputError("no light reaches a surface: every light is behind the surfaces, out of range or aimed away, "
                      "and no material emits");
 
@@ -285,6 +286,7 @@ EffectPlan plan_effects(const Scene& scene, const PlanOptions& options) {
   }
   for (size_t l = 0; l < scene.lights.size(); ++l)
     if (plan.light_traced[l]) colours.push_back(chromaticity(scene.lights[l].color));
+  if (options.sky) colours.push_back(Rgb{1, 1, 1});
   bool one_colour = !colours.empty() && std::all_of(colours.begin(), colours.end(),
                                                     [&](Rgb c) { return same_colour(c, colours.front()); });
   if (!plan.interreflection) {

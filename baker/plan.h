@@ -16,6 +16,7 @@ namespace radbake {
 struct PlanOptions {
   bool direct_only = false;          // the user asks for direct light only: no interreflection
   bool simulate_everything = false;  // plan nothing away: the reference every skip is checked against
+  bool sky = false;                  // a (white) sky lights the scene too: BakeOptions::sky
 };
 
 struct PlanDecision {

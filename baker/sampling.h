@@ -32,6 +32,7 @@ enum class Stream : uint64_t {
   Hemicube,
   Cover,
   PathTrace,
+  Sky,
 };
 
 // A counter-based generator for one (seed, stream, key) triple.

@@ -1,0 +1,32 @@
+// The sky as a light source: each texel's illuminance from the sky it sees, by cosine-distributed
+// rays from points over its footprint; a ray that leaves the scene upward takes the sky's
+// luminance in its direction, one that strikes a surface or leaves below the horizon none (the
+// ground is not modelled yet). The light the surfaces then reflect is the solve's, as for lamps.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "baker/elements.h"
+#include "baker/progress.h"
+#include "baker/ray_tracer.h"
+#include "baker/sky_luminance.h"
+#include "baker/surface.h"
+
+namespace radbake {
+
+struct SkyLight {
+  bool enabled = false;
+  SkyDistribution distribution;
+  double zenith_luminance = 0;           // cd/m2
+  double sun_zenith = 0, sun_azimuth = 0;  // radians; azimuth from north, eastward
+  Vec3 up{0, 1, 0};                      // the scene's zenith (glTF: +Y)
+  Vec3 north{0, 0, -1};                  // the scene's north, perpendicular to `up`
+  uint32_t rays = 256;                   // per texel
+};
+
+// Per element, lux (grey: the sky is white).
+std::vector<Rgb> sky_irradiance(const Elements& elements, const Surface& surface, const RayTracer& tracer,
+                                const SkyLight& sky, uint64_t seed, Progress& progress);
+
+}  // namespace radbake
