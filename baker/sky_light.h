@@ -1,7 +1,8 @@
 // The sky as a light source: each texel's illuminance from the sky it sees, by cosine-distributed
 // rays from points over its footprint; a ray that leaves the scene upward takes the sky's
-// luminance in its direction, one that strikes a surface or leaves below the horizon none (the
-// ground is not modelled yet). The light the surfaces then reflect is the solve's, as for lamps.
+// luminance in its direction, one that leaves below the horizon the ground's: an endless
+// Lambertian plane lit by the whole unobstructed sky, L = rho E_h / pi. One that strikes a
+// surface, none. The light the surfaces then reflect is the solve's, as for lamps.
 #pragma once
 
 #include <cstdint>
@@ -22,6 +23,7 @@ struct SkyLight {
   double sun_zenith = 0, sun_azimuth = 0;  // radians; azimuth from north, eastward
   Vec3 up{0, 1, 0};                      // the scene's zenith (glTF: +Y)
   Vec3 north{0, 0, -1};                  // the scene's north, perpendicular to `up`
+  double ground_reflectance = 0.2;       // of the ground beyond the scene, below the horizon
   uint32_t rays = 256;                   // per texel
 };
 

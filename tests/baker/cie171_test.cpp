@@ -132,25 +132,5 @@ TEST(Cie171, Case5_9SkyComponentThroughARoofOpeningIsTheViewFactor) {
   EXPECT_LT(std::fabs(mean_error), 0.005);
 }
 
-TEST(Cie171, ASkyAloneLightsAScene) {
-  // No lamp and no emitting material: with a sky, "nothing emits light" must not be an error.
-  Scene scene;
-  const int grey = test::add_material(scene, {0.5f, 0.5f, 0.5f});
-  test::add_quad(scene, {-1, 0, 1}, {2, 0, 0}, {0, 0, -2}, grey, "ground plate");
-  BakeOptions options;
-  options.sky.enabled = true;
-  options.sky.distribution.model = SkyModel::Uniform;
-  options.sky.zenith_luminance = 1000;
-  options.sky.rays = 64;
-  AtlasOptions atlas;
-  atlas.texel_density = 4;
-  const BakeResult r = test::bake_scene(scene, atlas, options).result;
-  // A plate open to a uniform sky: E = pi L everywhere, exactly (no ray can be blocked).
-  for (size_t i = 0; i < r.elements.size(); ++i)
-    if (r.elements.valid(i) && r.elements.normal[i].y > 0.9f) {
-      EXPECT_NEAR(sum(r.irradiance[i]) / 3, M_PI * 1000, 1e-2);  // float rounding of ~3142 lx
-    }
-}
-
 }  // namespace
 }  // namespace radbake
