@@ -1,3 +1,6 @@
+// The sun, a disc 0.53 degree across, by shadow rays to points spread over it (soft shadow edges,
+// as wide as the disc's angle times the distance to what casts them).
+//
 // The sky as a light source: each texel's illuminance from the sky it sees, by cosine-distributed
 // rays from points over its footprint; a ray that leaves the scene upward takes the sky's
 // luminance in its direction, one that leaves below the horizon the ground's: an endless
@@ -23,9 +26,14 @@ struct SkyLight {
   double sun_zenith = 0, sun_azimuth = 0;  // radians; azimuth from north, eastward
   Vec3 up{0, 1, 0};                      // the scene's zenith (glTF: +Y)
   Vec3 north{0, 0, -1};                  // the scene's north, perpendicular to `up`
+  double sun_illuminance = 0;            // lux, direct normal (on a plane facing the sun); 0: no sun
   double ground_reflectance = 0.2;       // of the ground beyond the scene, below the horizon
-  uint32_t rays = 256;                   // per texel
+  uint32_t rays = 256;                   // sky rays per texel
+  uint32_t sun_rays = 32;                // shadow rays per texel to the sun's disc
 };
+
+// The direction the sun shines from, in the scene.
+Vec3 sun_direction(const SkyLight& sky);
 
 // Per element, lux (grey: the sky is white).
 std::vector<Rgb> sky_irradiance(const Elements& elements, const Surface& surface, const RayTracer& tracer,

@@ -55,5 +55,70 @@ TEST(SkyLight, AWallInTheOpenSeesHalfSkyHalfGround) {
   EXPECT_LT(worst, 0.01);
 }
 
+SkyLight sun_only(double zenith_degrees, double normal_lux) {
+  SkyLight sky;
+  sky.enabled = true;
+  sky.zenith_luminance = 0;  // no sky: the sun alone
+  sky.ground_reflectance = 0;
+  sky.rays = 1;
+  sky.sun_zenith = zenith_degrees * M_PI / 180;
+  sky.sun_illuminance = normal_lux;
+  sky.sun_rays = 64;
+  return sky;
+}
+
+TEST(SkyLight, TheSunOnAnOpenFloorGivesItsNormalIlluminanceTimesCosine) {
+  Scene scene;
+  const int grey = test::add_material(scene, {0.5f, 0.5f, 0.5f});
+  test::add_quad(scene, {-1, 0, 1}, {2, 0, 0}, {0, 0, -2}, grey, "floor");
+  BakeOptions options;
+  options.sky = sun_only(60, 100000);
+  AtlasOptions atlas;
+  atlas.texel_density = 4;
+  const BakeResult r = test::bake_scene(scene, atlas, options).result;
+  for (size_t i = 0; i < r.elements.size(); ++i)
+    if (r.elements.valid(i) && r.elements.normal[i].y > 0.9f) {
+      // 50,000 lx: the disc's points lie 0.27 degree either side of 60, their cosines averaging
+      // to cos 60 within 1e-5; 0.1% bounds that and float sums.
+      EXPECT_NEAR(sum(r.irradiance[i]) / 3 / 50000, 1.0, 1e-3);
+    }
+}
+
+TEST(SkyLight, TheSunsDiscCastsASoftShadowEdge) {
+  // The sun overhead; a plate 2 m up covers x < 0. On the floor below, the penumbra is
+  // 2 m x tan(0.2665 degree) = 9.3 mm either side of x = 0: dark before, lit after, and
+  // in between neither.
+  Scene scene;
+  const int grey = test::add_material(scene, {0, 0, 0});
+  test::add_quad(scene, {-0.2f, 0, 0.05f}, {0.4f, 0, 0}, {0, 0, -0.1f}, grey, "floor");
+  test::add_quad(scene, {-1, 2, 1}, {1, 0, 0}, {0, 0, -2}, grey, "overhang");
+  BakeOptions options;
+  options.sky = sun_only(0, 100000);
+  AtlasOptions atlas;
+  atlas.texel_density = 400;  // 2.5 mm texels
+  const BakeResult r = test::bake_scene(scene, atlas, options).result;
+  size_t shadowed = 0, lit = 0, penumbra = 0;
+  for (size_t i = 0; i < r.elements.size(); ++i) {
+    if (!r.elements.valid(i) || r.elements.position[i].y > 0.01f || r.elements.normal[i].y < 0.9f) continue;
+    const double x = r.elements.position[i].x, fraction = sum(r.irradiance[i]) / 3 / 100000;
+    if (x < -0.012) {  // beyond the penumbra and a texel
+      EXPECT_LT(fraction, 0.01) << x;
+      ++shadowed;
+    }
+    if (x > 0.012) {
+      EXPECT_GT(fraction, 0.99) << x;
+      ++lit;
+    }
+    if (std::fabs(x) < 0.004) {
+      EXPECT_GT(fraction, 0.2) << x;  // a texel on the edge sees part of the disc, not none or all
+      EXPECT_LT(fraction, 0.8) << x;
+      ++penumbra;
+    }
+  }
+  EXPECT_GT(shadowed, 100u);
+  EXPECT_GT(lit, 100u);
+  EXPECT_GT(penumbra, 10u);
+}
+
 }  // namespace
 }  // namespace radbake
