@@ -67,7 +67,7 @@ PlanDecision solve_outcome(const RadiositySolution& s, const SolveOptions& optio
 // at texel resolution. Adds the indirect light to result.direct into result.irradiance and fills
 // the report's solve figures and energy balance.
 void interreflect(const Elements& elements, const Surface& surface, const RayTracer& tracer, const BakeOptions& options,
-                  const EffectPlan& plan, double punctual_power, const FiniteCheckContext& checked, Progress& progress,
+                  const EffectPlan& plan, double delivered_power, const FiniteCheckContext& checked, Progress& progress,
                   const PreviewCallback& on_preview, BakeResult& result) {
   BakeReport& report = result.report;
   InterreflectionObserver observer;
@@ -114,7 +114,7 @@ void interreflect(const Elements& elements, const Surface& surface, const RayTra
   });
   check_element_values("the final gather", result.irradiance, checked, patches.patch_of_element);
   for (size_t i = 0; i < elements.size(); ++i) result.irradiance[i] += result.direct[i];
-  report.balance = energy_balance(elements, patches, light_between.transport, punctual_power, result.irradiance);
+  report.balance = energy_balance(elements, patches, light_between.transport, delivered_power, result.irradiance);
 
   report.patches = patches.size();
   report.patch_block_size = patches.block_size;
@@ -142,27 +142,27 @@ void compute_radiosity(const Scene& scene, const Elements& elements, const Surfa
   direct.shadow_rays = plan.shadow_rays;
   direct.cull_unlit = !plan.exhaustive;
   direct.light_traced = plan.light_traced;
-  std::vector<Rgb> punctual = clock.run("punctual lights", [&] {
+  std::vector<Rgb> lights_and_sky = clock.run("punctual lights", [&] {
     return punctual_irradiance(elements, surface, scene.lights, tracer, direct, options.seed, progress);
   });
   if (options.sky.enabled) {
     const std::vector<Rgb> sky = clock.run("sky", [&] {
       return sky_irradiance(elements, surface, tracer, options.sky, options.seed, progress);
     });
-    for (size_t i = 0; i < elements.size(); ++i) punctual[i] += sky[i];
+    for (size_t i = 0; i < elements.size(); ++i) lights_and_sky[i] += sky[i];
   }
   result.direct = clock.run("area lights", [&] {
     return emitter_irradiance(elements, surface, materials, tracer, direct, options.seed, progress);
   });
-  double punctual_power = 0;  // lm, mean of RGB, that punctual lights and the sky land on valid elements
+  double delivered_power = 0;  // lm, mean of RGB, that punctual lights and the sky land on valid elements
   for (size_t i = 0; i < elements.size(); ++i) {
-    if (elements.valid(i)) punctual_power += double(sum(punctual[i])) / 3.0 * elements.area[i];
-    result.direct[i] += punctual[i];
+    if (elements.valid(i)) delivered_power += double(sum(lights_and_sky[i])) / 3.0 * elements.area[i];
+    result.direct[i] += lights_and_sky[i];
   }
-  punctual = {};
+  lights_and_sky = {};
   check_element_values("direct light", result.direct, checked);
   if (plan.interreflection) {
-    interreflect(elements, surface, tracer, options, plan, punctual_power, checked, progress, on_preview, result);
+    interreflect(elements, surface, tracer, options, plan, delivered_power, checked, progress, on_preview, result);
   } else {
     result.irradiance = result.direct;
     result.patch_of_element.assign(elements.size(), UINT32_MAX);

@@ -6,10 +6,10 @@ double mean(Rgb v) { return (double(v.x) + v.y + v.z) / 3.0; }
 }  // namespace
 
 EnergyBalance energy_balance(const Elements& e, const Patches& patches, const PatchTransport& transport,
-                             double punctual_power, const std::vector<Rgb>& irradiance) {
+                             double delivered_power, const std::vector<Rgb>& irradiance) {
   EnergyBalance b;
   b.measured = true;
-  b.emitted = punctual_power;
+  b.emitted = delivered_power;
   // What each patch's texels send out, emitted and reflected, from the final irradiance: the near
   // field and the final gather change what texels reflect after the patch solve.
   std::vector<double> leaving(patches.size(), 0);

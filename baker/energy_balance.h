@@ -25,6 +25,6 @@ struct EnergyBalance {
 // `irradiance`: the final light per element, lux; what leaves each patch is its elements' emission
 // plus their reflectance times this.
 EnergyBalance energy_balance(const Elements& elements, const Patches& patches, const PatchTransport& transport,
-                             double punctual_power, const std::vector<Rgb>& irradiance);
+                             double delivered_power, const std::vector<Rgb>& irradiance);
 
 }  // namespace radbake

@@ -110,7 +110,6 @@ std::vector<Rgb> near_field_bounces(const Patches& patches, const PatchTransport
   return gathered_irradiance(patches, transport, reflected);
 }
 
-
 // Gather rays from a receiver that landed near, on one struck element.
 struct NearLanding {
   uint32_t receiver, struck, count;
@@ -178,7 +177,6 @@ NearTally tally_near_field(const Elements& e, const Patches& patches, const std:
   return near;
 }
 
-
 // Adds each patch's change of irradiance to its texels: a gain evenly, a loss in proportion to
 // what each texel gathered, so that no texel goes below zero while the patch still gives up the
 // whole loss (taken evenly, a dark texel's share would be clamped away and light created: 1.3%
@@ -186,14 +184,11 @@ NearTally tally_near_field(const Elements& e, const Patches& patches, const std:
 void apply_patch_changes(const Elements& e, const Patches& patches, const std::vector<Rgb>& change,
                          std::vector<Rgb>& irradiance) {
   std::vector<Rgb> mean(patches.size());
-  std::vector<double> area(patches.size(), 0);
   for (size_t i = 0; i < e.size(); ++i)
-    if (e.valid(i) && patches.patch_of_element[i] != UINT32_MAX) {
+    if (e.valid(i) && patches.patch_of_element[i] != UINT32_MAX)
       mean[patches.patch_of_element[i]] += irradiance[i] * e.area[i];
-      area[patches.patch_of_element[i]] += e.area[i];
-    }
   for (size_t p = 0; p < patches.size(); ++p)
-    if (area[p] > 0) mean[p] = mean[p] / float(area[p]);
+    if (patches.area[p] > 0) mean[p] = mean[p] / patches.area[p];
   auto changed = [](float value, float mean, float change) {  // at least 0: the near solve rounds
     if (change >= 0) return std::max(0.0f, value + change);
     return mean > 0 ? std::max(0.0f, value) * std::max(0.0f, 1 + change / mean) : 0.0f;

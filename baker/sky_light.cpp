@@ -9,19 +9,29 @@
 namespace radbake {
 
 namespace {
+
 constexpr double kSunRadius = 0.2665 * M_PI / 180;  // the disc's angular radius
+
+// The scene's up, north and east, unit length; azimuths turn from north toward east.
+struct Compass {
+  Vec3 up, north, east;
+  explicit Compass(const SkyLight& sky)
+      : up(normalize(sky.up)), north(normalize(sky.north)), east(normalize(cross(north, up))) {}
+};
+
 }  // namespace
 
 Vec3 sun_direction(const SkyLight& sky) {
-  const Vec3 up = normalize(sky.up), north = normalize(sky.north), east = normalize(cross(north, up));
+  const Compass c(sky);
   const float z = float(sky.sun_zenith), a = float(sky.sun_azimuth);
-  return normalize(up * std::cos(z) + (north * std::cos(a) + east * std::sin(a)) * std::sin(z));
+  return normalize(c.up * std::cos(z) + (c.north * std::cos(a) + c.east * std::sin(a)) * std::sin(z));
 }
 
 std::vector<Rgb> sky_irradiance(const Elements& e, const Surface& surface, const RayTracer& tracer,
                                 const SkyLight& sky, uint64_t seed, Progress& progress) {
   std::vector<Rgb> irradiance(e.size());
-  const Vec3 up = normalize(sky.up), north = normalize(sky.north), east = normalize(cross(north, up));
+  const Compass compass(sky);
+  const Vec3 &up = compass.up, &north = compass.north, &east = compass.east;
   const uint32_t rays = std::max<uint32_t>(1, sky.rays), sun_rays = std::max<uint32_t>(1, sky.sun_rays);
   const Vec3 sun = sun_direction(sky);
   Vec3 sun_t, sun_b;
