@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "baker/errors.h"
 #include "support/scene_builders.h"
 
 namespace radbake {
@@ -53,6 +54,24 @@ TEST(SkyLight, AWallInTheOpenSeesHalfSkyHalfGround) {
   // Measured 1e-6: the stratified rays split at the horizon exactly in half. 1% bounds the
   // split's noise for other seeds and densities.
   EXPECT_LT(worst, 0.01);
+}
+
+TEST(SkyLight, ThePathTracerRefusesASkyWithOneClearError) {
+  Scene scene;
+  const int grey = test::add_material(scene, {0.5f, 0.5f, 0.5f});
+  test::add_quad(scene, {-1, 0, 1}, {2, 0, 0}, {0, 0, -2}, grey, "ground plate");
+  BakeOptions options;
+  options.method = Method::PathTrace;
+  options.sky.enabled = true;
+  options.sky.zenith_luminance = 1000;
+  AtlasOptions atlas;
+  atlas.texel_density = 4;
+  try {
+    test::bake_scene(scene, atlas, options);
+    FAIL() << "a path-traced bake under a sky was not refused";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("does not trace a sky"), std::string::npos) << e.what();
+  }
 }
 
 SkyLight sun_only(double zenith_degrees, double normal_lux) {
