@@ -334,8 +334,12 @@ EffectPlan plan_effects(const Scene& scene, const PlanOptions& options) {
   std::string hidden = why_not_convex(scene, plan.light_traced);
   if (hidden.empty()) {
     plan.shadow_rays = false;
-    decide("shadows", "no shadow rays", "the scene is a convex enclosure with every light inside: nothing can "
-                                        "shadow anything");
+    if (options.sky)
+      decide("shadows", "traced for the sky and the sun only",
+             "they shine from outside; the scene is convex with its own lights inside, which need none");
+    else
+      decide("shadows", "no shadow rays", "the scene is a convex enclosure with every light inside: nothing can "
+                                          "shadow anything");
   } else {
     decide("shadows", "traced", hidden);
   }

@@ -198,6 +198,34 @@ bake options:
                           sample flags and patch layout, undilated
   --quiet                 no progress and no warnings on stderr
 
+daylight options (bake): a sky and a sun lighting the scene, besides its own lights
+  --sky NAME              none | uniform | cie-overcast (the traditional CIE overcast sky, for
+                          daylight factors) | cie-1 .. cie-15 (the CIE standard general skies,
+                          ISO 15469: 1-6 overcast, 7-10 intermediate, 11-15 clear) | cie-clear
+                          (= cie-12) (default none)
+  --sky-illuminance LUX   the sky's illuminance on an open horizontal plane, sun excluded
+                          (default 10000)
+  --sun-illuminance LUX   the sun's direct normal illuminance, lux (default none; skies cie-7 ..
+                          cie-15 have a sun and need it: 0 for none); the sun is a 0.53 degree
+                          disc, so shadow edges are soft
+  --latitude DEG          site, north positive; with --longitude, --date and --time it places
+  --longitude DEG         the sun (NREL SPA's conventions: east positive)
+  --date YYYY-MM-DD       local date
+  --time HH:MM[:SS]       local clock time
+  --utc-offset H          local time minus UTC in hours, -12..14 (default the longitude's nominal
+                          zone, round(longitude / 15): daylight saving is yours to add)
+  --elevation M           site elevation (default 0)
+  --pressure MBAR         air pressure (default 1013.25) and temperature (default 15 C), for
+  --temperature C         the refraction near the horizon
+  --sun-position Z,A      the sun's zenith angle and azimuth in degrees instead of a site and time
+                          (azimuth from north, eastward: east 90, south 180)
+  --north DEG|X,Y,Z       which way north is in the scene: a direction along the ground, or an
+                          angle from -Z turned toward +X (seen from above, clockwise) (default
+                          0,0,-1: north is -Z, east +X, with glTF's +Y up)
+  --ground-reflectance X  the ground beyond the scene, below the horizon, 0..1 (default 0.2)
+  --sky-rays N            sky rays per texel (default 256)
+  --sun-rays N            shadow rays per texel to the sun's disc (default 32)
+
 diff options:
   --json                  machine-readable statistics on stdout
   --max-rmse PCT          fail when the relative RMSE exceeds PCT percent
@@ -264,6 +292,108 @@ void load_options(LoadOptions& l, std::map<std::string, Setter>& with_value, std
     const std::string digits = unit == std::string::npos ? v : v.substr(0, v.size() - 1);
     l.max_memory_bytes = uint64_t(parse_number("--max-memory", digits, 1, 1e15 / scale) * scale);
   };
+}
+
+// "a,b,c" as numbers, for the options that take a direction or a pair of angles.
+std::vector<double> parse_numbers(const std::string& option, const std::string& text, size_t count, double lo,
+                                  double hi) {
+  std::vector<double> values;
+  size_t start = 0;
+  for (size_t k = 0; k < count; ++k) {
+    const size_t comma = k + 1 < count ? text.find(',', start) : text.size();
+    if (comma == std::string::npos)
+      throw UsageError("option " + option + " needs " + std::to_string(count) + " numbers separated by commas" + got(text));
+    values.push_back(parse_number(option, text.substr(start, comma - start), lo, hi));
+    start = comma + 1;
+  }
+  return values;
+}
+
+// The site and moment as typed; made into a SiteAndTime once every option is read.
+struct SiteInput {
+  bool latitude = false, longitude = false, date = false, time = false, utc_offset = false;
+  SiteAndTime site;
+};
+
+void daylight_options(DaylightOptions& d, SiteInput& in, std::map<std::string, Setter>& with_value) {
+  with_value["--sky"] = [&](const std::string& v) {
+    if (v == "none") d.sky = SkyKind::None;
+    else if (v == "uniform") d.sky = SkyKind::Uniform;
+    else if (v == "cie-overcast") d.sky = SkyKind::CieOvercast;
+    else if (v == "cie-clear") {
+      d.sky = SkyKind::CieGeneral;
+      d.cie_type = 12;
+    } else if (const char* type = v.rfind("cie-", 0) == 0 ? v.c_str() + 4 : nullptr;
+               type && std::string(type) == std::to_string(std::atoi(type)) && std::atoi(type) >= 1 && std::atoi(type) <= 15) {
+      d.sky = SkyKind::CieGeneral;
+      d.cie_type = std::atoi(type);
+    } else {
+      throw UsageError("option --sky must be none, uniform, cie-overcast, cie-clear or cie-1 .. cie-15" + got(v));
+    }
+  };
+  with_value["--sky-illuminance"] = [&](const std::string& v) { d.sky_illuminance = parse_number("--sky-illuminance", v, 1e-6, 1e6); };
+  with_value["--sun-illuminance"] = [&](const std::string& v) { d.sun_illuminance = parse_number("--sun-illuminance", v, 0, 2e5); };
+  with_value["--sun-position"] = [&](const std::string& v) {
+    const std::vector<double> za = parse_numbers("--sun-position", v, 2, -360, 360);
+    if (za[0] < 0 || za[0] > 180) throw UsageError("option --sun-position: the zenith angle must be 0..180 degrees" + got(v));
+    d.sun = SunPosition{za[0], za[1]};
+  };
+  with_value["--latitude"] = [&](const std::string& v) { in.site.latitude = parse_number("--latitude", v, -90, 90); in.latitude = true; };
+  with_value["--longitude"] = [&](const std::string& v) { in.site.longitude = parse_number("--longitude", v, -180, 180); in.longitude = true; };
+  with_value["--elevation"] = [&](const std::string& v) { in.site.elevation = parse_number("--elevation", v, -500, 9000); };
+  with_value["--pressure"] = [&](const std::string& v) { in.site.pressure = parse_number("--pressure", v, 300, 1100); };
+  with_value["--temperature"] = [&](const std::string& v) { in.site.temperature = parse_number("--temperature", v, -90, 60); };
+  with_value["--utc-offset"] = [&](const std::string& v) { in.site.utc_offset = parse_number("--utc-offset", v, -12, 14); in.utc_offset = true; };
+  with_value["--date"] = [&](const std::string& v) {
+    int year = 0, month = 0, day = 0, used = 0;
+    if (std::sscanf(v.c_str(), "%4d-%2d-%2d%n", &year, &month, &day, &used) != 3 || size_t(used) != v.size() ||
+        month < 1 || month > 12 || day < 1 || day > 31 || year < 1 || year > 9999)
+      throw UsageError("option --date needs YYYY-MM-DD" + got(v));
+    in.site.year = year;
+    in.site.month = month;
+    in.site.day = day;
+    in.date = true;
+  };
+  with_value["--time"] = [&](const std::string& v) {
+    int hour = 0, minute = 0, used = 0;
+    double second = 0;
+    const int fields = std::sscanf(v.c_str(), "%2d:%2d%n:%lf%n", &hour, &minute, &used, &second, &used);
+    if (fields < 2 || size_t(used) != v.size() || hour > 24 || minute > 59 || second < 0 || second >= 60 || hour < 0 ||
+        minute < 0)
+      throw UsageError("option --time needs HH:MM or HH:MM:SS, local clock time" + got(v));
+    in.site.hour = hour;
+    in.site.minute = minute;
+    in.site.second = second;
+    in.time = true;
+  };
+  with_value["--north"] = [&](const std::string& v) {
+    if (v.find(',') == std::string::npos) {
+      // Rounded so that whole quarter turns give exact axes (cos 90 degrees is 6e-17, not 0).
+      const double turn = parse_number("--north", v, -360, 360) * M_PI / 180;
+      auto rounded = [](double x) { return float(std::round(x * 1e9) / 1e9) + 0.0f; };  // + 0: no -0
+      d.north = {rounded(std::sin(turn)), 0, rounded(-std::cos(turn))};
+    } else {
+      const std::vector<double> n = parse_numbers("--north", v, 3, -1e6, 1e6);
+      d.north = {float(n[0]), float(n[1]), float(n[2])};
+    }
+  };
+  with_value["--ground-reflectance"] = [&](const std::string& v) { d.ground_reflectance = parse_number("--ground-reflectance", v, 0, 1); };
+  with_value["--sky-rays"] = [&](const std::string& v) { d.sky_rays = uint32_t(parse_integer("--sky-rays", v, 1, 1 << 20)); };
+  with_value["--sun-rays"] = [&](const std::string& v) { d.sun_rays = uint32_t(parse_integer("--sun-rays", v, 1, 1 << 16)); };
+}
+
+// The site's options come as a set: a sun position needs all four of latitude, longitude, date
+// and time; the UTC offset defaults to the nominal zone of the longitude (no daylight saving).
+void finish_site(DaylightOptions& d, SiteInput& in) {
+  const int given = in.latitude + in.longitude + in.date + in.time;
+  if (given == 0) return;
+  if (given < 4)
+    throw UsageError(std::string("a site and time needs --latitude, --longitude, --date and --time; missing") +
+                     (in.latitude ? "" : " --latitude") + (in.longitude ? "" : " --longitude") +
+                     (in.date ? "" : " --date") + (in.time ? "" : " --time"));
+  if (d.sun) throw UsageError("--sun-position and a site and time both say where the sun is: give one");
+  if (!in.utc_offset) in.site.utc_offset = std::round(in.site.longitude / 15);
+  d.site = in.site;
 }
 
 // Reads `args` from position 1: options from the two tables, positional arguments to `positional`.
@@ -455,6 +585,8 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
   };
   atlas_options(b.atlas, with_value, flags);
   load_options(b.load, with_value, flags);
+  SiteInput site;
+  daylight_options(b.daylight, site, with_value);
   // The preset (preview unless one is named) goes first wherever it stands, so options given with
   // it override it.
   std::string quality = "preview";
@@ -474,6 +606,7 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
   if (b.output.empty()) throw UsageError("missing -o OUTDIR");
   if (b.bake.plan.direct_only && b.bake.plan.simulate_everything)
     throw UsageError("--direct-only and --simulate-everything contradict each other");
+  finish_site(b.daylight, site);
 
   // The report lists every option with the value the bake used, read back from the structs so
   // the listing cannot drift from the defaults.
@@ -530,6 +663,30 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
       {"max-memory", b.load.max_memory_bytes ? std::to_string(b.load.max_memory_bytes) : "auto"},
       {"max-triangles", std::to_string(b.load.max_triangles)},
   };
+  const DaylightOptions& d = b.daylight;
+  if (d.sky != SkyKind::None) {
+    b.effective.insert(b.effective.end(), {
+        {"sky", d.sky == SkyKind::Uniform ? "uniform" : d.sky == SkyKind::CieOvercast ? "cie-overcast"
+                                                                                        : "cie-" + number(d.cie_type)},
+        {"sky-illuminance", number(d.sky_illuminance)},
+        {"sun-illuminance", number(d.sun_illuminance.value_or(0))},
+        {"north", number(d.north.x) + "," + number(d.north.y) + "," + number(d.north.z)},
+        {"ground-reflectance", number(d.ground_reflectance)},
+        {"sky-rays", number(d.sky_rays)},
+        {"sun-rays", number(d.sun_rays)},
+    });
+    if (d.sun) b.effective.push_back({"sun-position", number(d.sun->zenith) + "," + number(d.sun->azimuth)});
+    if (d.site) {
+      char date[16];
+      std::snprintf(date, sizeof date, "%04d-%02d-%02d", d.site->year, d.site->month, d.site->day);
+      b.effective.insert(b.effective.end(), {
+          {"latitude", number(d.site->latitude)}, {"longitude", number(d.site->longitude)},
+          {"elevation", number(d.site->elevation)}, {"utc-offset", number(d.site->utc_offset)},
+          {"date", date}, {"time", number(d.site->hour) + ":" + number(d.site->minute) + ":" + number(d.site->second)},
+          {"pressure", number(d.site->pressure)}, {"temperature", number(d.site->temperature)},
+      });
+    }
+  }
   return cl;
 }
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "baker/bake.h"
+#include "baker/daylight.h"
 #include "baker/exposure.h"
 #include "baker/lightmap_difference.h"
 #include "io/gltf.h"
@@ -30,6 +31,7 @@ struct BakeCommand {
   LoadOptions load;
   AtlasOptions atlas;
   BakeOptions bake;
+  DaylightOptions daylight;  // made into bake.sky by daylight_sky() when the bake starts
   float png_scale = 0;  // 0: automatic
   DisplayMode display = DisplayMode::Page;
   int display_detail = 0;      // pre-lit texels per lightmap texel along a side (1, 2, 4); 0: automatic

@@ -123,7 +123,12 @@ int run_bake(const radbake::BakeCommand& cmd) {
   run.io_times.push_back({"load", seconds_since(t)});
   stop_if_interrupted();
   // Planned before anything is written or unwrapped, so a scene with no light fails at once.
-  const EffectPlan plan = plan_effects(loaded.scene, cmd.bake.plan);
+  BakeOptions options = cmd.bake;
+  const Daylight daylight = daylight_sky(cmd.daylight);
+  options.sky = daylight.light;
+  options.plan.sky = daylight.light.enabled;
+  if (daylight.light.enabled) run.daylight = daylight.summary;
+  const EffectPlan plan = plan_effects(loaded.scene, options.plan);
   if (!cmd.quiet)
     for (const PlanDecision& d : plan.decisions)
       std::fprintf(stderr, "radbake: plan: %s: %s (%s)\n", d.effect.c_str(), d.choice.c_str(), d.reason.c_str());
@@ -146,7 +151,6 @@ int run_bake(const radbake::BakeCommand& cmd) {
                  100.0 / atlas.texel_density, atlas.density_choice.c_str());
   }
 
-  BakeOptions options = cmd.bake;
   options.keep_direct = cmd.debug_dumps;
   const std::string name = std::filesystem::path(cmd.input).stem().string();
   PreviewWriter previews(folder.path(), name, cmd.quiet);

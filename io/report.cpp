@@ -6,6 +6,25 @@
 
 namespace radbake {
 
+namespace {
+
+nlohmann::ordered_json daylight_json(const std::optional<DaylightSummary>& daylight) {
+  if (!daylight) return nullptr;
+  const DaylightSummary& d = *daylight;
+  nlohmann::ordered_json out = {{"sky", d.sky},
+                                {"zenith_luminance_cd_m2", d.zenith_luminance},
+                                {"sky_horizontal_illuminance_lx", d.sky_illuminance},
+                                {"sun_direct_normal_illuminance_lx", d.sun_illuminance},
+                                {"exterior_horizontal_illuminance_lx", d.exterior_horizontal_illuminance}};
+  if (d.sun_known) {
+    out["sun_zenith_deg"] = d.sun_zenith;
+    out["sun_azimuth_deg_from_north_eastward"] = d.sun_azimuth;
+  }
+  return out;
+}
+
+}  // namespace
+
 void write_report(const std::string& path, const RunInfo& run, const Scene& scene, const Atlas& atlas,
                   const BakeReport& bake, const LightmapFiles& lightmaps, const std::vector<std::string>& warnings) {
   using json = nlohmann::ordered_json;
@@ -91,6 +110,7 @@ void write_report(const std::string& path, const RunInfo& run, const Scene& scen
       {"lightmaps", {{"quantity", lightmaps.quantity}, {"unit", lightmaps.unit},
                      {"png_intensity", lightmaps.png_scale}}},
       {"display", display},
+      {"daylight", daylight_json(run.daylight)},
       {"warnings", warnings},
       {"files", run.files},
   };

@@ -1,11 +1,13 @@
 // report.json: what went in, what the bake did and how long it took, whether light was conserved.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "baker/bake.h"
+#include "baker/daylight.h"
 #include "io/gltf.h"
 
 namespace radbake {
@@ -32,6 +34,7 @@ struct RunInfo {
   size_t peak_memory_bytes = 0;
   std::vector<std::string> files;  // everything written into the output folder, relative to it
   DisplaySummary display;
+  std::optional<DaylightSummary> daylight;  // with a sky
 };
 
 void write_report(const std::string& path, const RunInfo& run, const Scene& scene, const Atlas& atlas,

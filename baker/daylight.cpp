@@ -1,0 +1,95 @@
+#include "baker/daylight.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "baker/errors.h"
+
+namespace radbake {
+namespace {
+
+constexpr double kDegree = M_PI / 180;
+
+// ISO 15469 types 1, 3 and 5 have no indicatrix: their luminance does not depend on the sun.
+bool sky_follows_sun(const DaylightOptions& o) {
+  return o.sky == SkyKind::CieGeneral && o.cie_type != 1 && o.cie_type != 3 && o.cie_type != 5;
+}
+
+std::string sky_name(const DaylightOptions& o) {
+  switch (o.sky) {
+    case SkyKind::Uniform: return "uniform";
+    case SkyKind::CieOvercast: return "cie-overcast";
+    case SkyKind::CieGeneral: return "cie-" + std::to_string(o.cie_type);
+    case SkyKind::None: break;
+  }
+  return "none";
+}
+
+std::string degrees_text(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f", v);
+  return text;
+}
+
+}  // namespace
+
+Daylight daylight_sky(const DaylightOptions& o) {
+  Daylight out;
+  if (o.sky == SkyKind::None) return out;
+  if (o.sky == SkyKind::CieGeneral && (o.cie_type < 1 || o.cie_type > 15))
+    throw InputError("CIE sky type must be 1..15, got " + std::to_string(o.cie_type));
+  if (o.sky == SkyKind::CieGeneral && o.cie_type >= 7 && !o.sun_illuminance)
+    throw InputError("sky " + sky_name(o) +
+                     " has a sun: give its direct normal illuminance in lux (--sun-illuminance, 0 for none)");
+  const double sun_lux = o.sun_illuminance.value_or(0.0);
+
+  DaylightSummary& s = out.summary;
+  s.sky = sky_name(o);
+  if (o.sun) {
+    s.sun_zenith = o.sun->zenith;
+    s.sun_azimuth = o.sun->azimuth;
+    s.sun_known = true;
+  } else if (o.site) {
+    const SunPosition p = sun_position(*o.site);
+    s.sun_zenith = p.zenith;
+    s.sun_azimuth = p.azimuth;
+    s.sun_known = true;
+  }
+  const bool needs_sun = sky_follows_sun(o) || sun_lux > 0;
+  if (needs_sun && !s.sun_known)
+    throw InputError("sky " + s.sky + (sun_lux > 0 ? " with a sun" : "") +
+                     " needs the sun's position: a site and time (--latitude, --longitude, --date, --time) or "
+                     "--sun-position");
+  if (needs_sun && s.sun_zenith >= 90)
+    throw InputError("the sun is below the horizon then (zenith " + degrees_text(s.sun_zenith) +
+                     " degrees): no daylight to bake under sky " + s.sky);
+
+  SkyLight& light = out.light;
+  light.enabled = true;
+  light.distribution.model = o.sky == SkyKind::Uniform       ? SkyModel::Uniform
+                             : o.sky == SkyKind::CieOvercast ? SkyModel::CieOvercast
+                                                             : SkyModel::CieGeneral;
+  light.distribution.cie_type = o.cie_type;
+  light.sun_zenith = s.sun_zenith * kDegree;
+  light.sun_azimuth = s.sun_azimuth * kDegree;
+  light.up = normalize(o.up);
+  const Vec3 north = o.north - light.up * dot(o.north, light.up);
+  if (!(length(north) > 1e-6f * length(o.north)))
+    throw InputError("north must not point straight up or down: it is a direction along the ground");
+  light.north = normalize(north);
+  light.ground_reflectance = o.ground_reflectance;
+  light.rays = o.sky_rays;
+  light.sun_rays = o.sun_rays;
+  light.zenith_luminance =
+      o.sky_illuminance /
+      horizontal_illuminance_over_zenith_luminance(light.distribution, light.sun_zenith, light.sun_azimuth);
+  light.sun_illuminance = sun_lux;
+
+  s.zenith_luminance = light.zenith_luminance;
+  s.sky_illuminance = o.sky_illuminance;
+  s.sun_illuminance = sun_lux;
+  s.exterior_horizontal_illuminance = o.sky_illuminance + sun_lux * std::cos(light.sun_zenith);
+  return out;
+}
+
+}  // namespace radbake

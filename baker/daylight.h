@@ -1,0 +1,54 @@
+// From what a user says about daylight (a sky type, a site and a moment or the sun's position,
+// how bright the sky and the sun are, which way is north) to the SkyLight the bake uses, with the
+// figures a report shows. Throws InputError for what cannot be baked (the sun below the horizon
+// under a sky that needs it, north along the vertical, a sunny sky with no sun brightness).
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "baker/sky_light.h"
+#include "baker/sun_position.h"
+
+namespace radbake {
+
+enum class SkyKind {
+  None,
+  Uniform,      // the same luminance everywhere
+  CieOvercast,  // the traditional CIE overcast sky (Moon and Spencer), for daylight factors
+  CieGeneral,   // one of the 15 CIE standard general skies, `cie_type`
+};
+
+struct DaylightOptions {
+  SkyKind sky = SkyKind::None;
+  int cie_type = 12;                         // with CieGeneral: 1..15
+  double sky_illuminance = 10000;            // lux, unobstructed horizontal from the sky alone
+  std::optional<double> sun_illuminance;     // lux, direct normal; unset: none (an error for skies 7..15)
+  // Where the sun is: from a site and a moment, or given (degrees, azimuth from north eastward).
+  std::optional<SiteAndTime> site;
+  std::optional<SunPosition> sun;
+  Vec3 up{0, 1, 0};                          // the scene's zenith (glTF: +Y)
+  Vec3 north{0, 0, -1};                      // projected onto the horizontal plane
+  double ground_reflectance = 0.2;
+  uint32_t sky_rays = 256, sun_rays = 32;    // per texel
+};
+
+// What the bake's daylight was, for report.json.
+struct DaylightSummary {
+  std::string sky;                     // "cie-12", "cie-overcast", "uniform"
+  double sun_zenith = 0, sun_azimuth = 0;  // degrees, azimuth from north eastward
+  bool sun_known = false;              // a site and moment or a position was given
+  double zenith_luminance = 0;         // cd/m2
+  double sky_illuminance = 0;          // lux, unobstructed horizontal, sky alone
+  double sun_illuminance = 0;          // lux, direct normal (0 when the sun is down or absent)
+  double exterior_horizontal_illuminance = 0;  // lux, sky plus sun on an open horizontal plane
+};
+
+struct Daylight {
+  SkyLight light;
+  DaylightSummary summary;
+};
+
+Daylight daylight_sky(const DaylightOptions& options);
+
+}  // namespace radbake
