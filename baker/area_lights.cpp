@@ -192,12 +192,14 @@ std::vector<Rgb> emitter_irradiance(const Elements& e, const Surface& surface, c
             if (lift > 0) target += ng * lift;
             Vec3 d = target - origin;
             float dist = length(d);
-            if (dist > 0 && options.shadow_rays && tracer.occluded(origin, d / dist, 0.0f, dist)) {
+            const float passes = dist > 0 && options.shadow_rays ? tracer.transmittance(origin, d / dist, 0.0f, dist) : 1.0f;
+            if (passes <= 0) {
               ++hidden;
               continue;
             }
             ++visible;
-            seen += (em.uniform ? em.emission : materials.emission(em.triangle, barycentric(em.corner, y), 1.0f)) * float(weight);
+            seen += (em.uniform ? em.emission : materials.emission(em.triangle, barycentric(em.corner, y), 1.0f)) *
+                    float(weight * passes);
           }
         };
         // Rays go where the shadow's edge is: a quarter of them first, and all of them only when

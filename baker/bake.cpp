@@ -202,8 +202,8 @@ BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& optio
   StageClock clock(report.stage_times);
 
   Surface surface = clock.run("surface", [&] { return build_surface(scene, atlas); });
-  auto tracer = clock.run("ray tracer", [&] { return std::make_unique<RayTracer>(surface); });
-  MaterialSampler materials(scene, surface, options.emission_scale);
+  MaterialSampler materials(scene, surface, options.emission_scale, options.glazing_transmittance);
+  auto tracer = clock.run("ray tracer", [&] { return std::make_unique<RayTracer>(surface, &materials); });
   ElementOptions element_options = options.elements;
   if (plan.exhaustive) element_options.filter = FootprintFilter::Everywhere;
   else if (!plan.texture_sampling) element_options.filter = FootprintFilter::BetweenMaterials;

@@ -54,6 +54,9 @@ struct BakeOptions {
   int threads = 0;              // 0: all cores
   StoredQuantity store = StoredQuantity::Irradiance;
   float emission_scale = 1;     // multiplies glTF emission before it is read as cd/m2 (see README)
+  // Visible transmittance of glazing (KHR_materials_transmission) whose material has no
+  // extras.visible_transmittance, 0..1; < 0: a clear pane of the material's index of refraction.
+  float glazing_transmittance = -1;
   bool keep_direct = false;     // keep BakeResult::direct (for debug dumps); costs 12 bytes per texel
   size_t preview_every = 0;     // with a preview callback: pages of the estimate every N shots or sweeps
 };

@@ -24,7 +24,11 @@ constexpr float kMaxReflectance = 0.999f;
 class MaterialSampler {
  public:
   // `emission_scale` multiplies every material's emission (a unit conversion for the source).
-  MaterialSampler(const Scene& scene, const Surface& surface, float emission_scale = 1);
+  // `glazing_transmittance` (0..1), when given, is the glazing's visible transmittance wherever a
+  // material has no extras.visible_transmittance of its own; otherwise a clear pane of the
+  // material's index of refraction.
+  MaterialSampler(const Scene& scene, const Surface& surface, float emission_scale = 1,
+                  float glazing_transmittance = -1);
 
   // `spacing` is the distance, in lightmap texels, between neighbouring samples of the caller; it
   // chooses the texture mip level so that each sample averages its share of the footprint.
@@ -32,6 +36,15 @@ class MaterialSampler {
   Rgb emission(uint32_t triangle, Vec2 bary, float spacing) const;  // exitance, lm/m2
   // The most any point of the triangle emits, lm/m2: its emission with the texture at full.
   Rgb emission_bound(uint32_t triangle) const;
+
+  // How much of the surface is there, 0..1: alpha under BLEND, 0 or 1 under MASK, else 1.
+  float coverage(uint32_t triangle, Vec2 bary, float spacing) const;
+  // The share of light that goes straight through the surface at a point, 0..1: where it is
+  // absent, and through its glazing where it is there. At full texture resolution (cut-outs are
+  // as sharp as their texture).
+  float transmittance(uint32_t triangle, Vec2 bary) const;
+  // False for the triangles every ray stops at (opaque and no glazing): most of them.
+  bool see_through(uint32_t triangle) const;
 
   // True when neither reflectance nor emission varies over the triangle (no textures, no COLOR_0).
   bool is_uniform(uint32_t triangle) const;
@@ -45,7 +58,7 @@ class MaterialSampler {
   struct Texture {
     std::vector<Level> levels;  // finest first, at most kMaxSampledSize per side
   };
-  enum class Decode { Srgb, Linear };
+  enum class Decode { Srgb, Linear, Alpha };  // Alpha: the fourth channel, in all three
 
   int texture_for(int image, Decode decode);
   Vec3 sample(const TextureRef& ref, int texture, uint32_t triangle, Vec2 bary, float spacing) const;
@@ -56,7 +69,8 @@ class MaterialSampler {
   std::vector<Texture> textures_;
   std::map<std::pair<int, Decode>, int> texture_of_image_;  // (image, decoding) -> textures_
   // Per material: index into textures_ for base colour, metallic, emission (-1 when absent).
-  std::vector<int> base_texture_, metallic_texture_, emissive_texture_;
+  std::vector<int> base_texture_, metallic_texture_, emissive_texture_, alpha_texture_;
+  std::vector<float> pane_transmittance_;  // per material: what its glazing lets through where it is there
 };
 
 }  // namespace radbake

@@ -57,7 +57,7 @@ int64_t element_for_hit(const Elements& e, const Surface& surface, const RayTrac
 
 Landing land(const Elements& elements, const Patches& patches, const Surface& surface, const RayTracer& tracer,
              Vec3 origin, Vec3 direction) {
-  const Hit hit = tracer.intersect(origin, direction, 0.0f, INFINITY);
+  const Hit hit = tracer.intersect_light_path(origin, direction, 0.0f, INFINITY);
   Landing at;
   at.escaped = hit.missed();
   at.distance = at.escaped ? INFINITY : hit.distance;

@@ -141,7 +141,8 @@ class PathTracer {
     Vec2 u = first_direction_u;
     for (int depth = 0; depth < kMaxBounces; ++depth) {
       const Vec3 direction = hemisphere_direction(v.shading_normal, v.geometric_normal, u);
-      const Hit hit = tracer_.intersect(v.position + v.geometric_normal * v.offset, direction, 0.0f, INFINITY);
+      const Hit hit =
+          tracer_.intersect_light_path(v.position + v.geometric_normal * v.offset, direction, 0.0f, INFINITY);
       // The back of a one-sided surface reflects nothing, as in the bake.
       if (hit.missed() || !hit.front) break;
       ++bounces;
@@ -175,8 +176,8 @@ class PathTracer {
       float distance = 0;
       const Rgb value = punctual_light_irradiance(light, v.position, v.shading_normal, &to_light, &distance);
       if (!(max_component(value) > 0) || dot(v.geometric_normal, to_light) <= 0) continue;
-      if (!tracer_.occluded(origin, to_light, 0.0f, std::isfinite(distance) ? distance * (1 - 1e-5f) : INFINITY))
-        total += value;
+      total += value * tracer_.transmittance(origin, to_light, 0.0f,
+                                             std::isfinite(distance) ? distance * (1 - 1e-5f) : INFINITY);
     }
     if (emitters_.empty()) return total;
     const D3 x = d3(origin);
@@ -232,8 +233,9 @@ class PathTracer {
     const Vec3 target = y + ny * hit_offset(y, surface_.scene_extent);
     Vec3 d = target - origin;
     const float r = length(d);
-    if (!(r > 0) || tracer_.occluded(origin, d / r, 0.0f, r * (1 - 1e-5f))) return total;
-    return total + materials_.emission(t, bary, 0.0f) * float(weight / probability);
+    const float passes = r > 0 ? tracer_.transmittance(origin, d / r, 0.0f, r * (1 - 1e-5f)) : 0.0f;
+    if (!(passes > 0)) return total;
+    return total + materials_.emission(t, bary, 0.0f) * float(weight * passes / probability);
   }
 
   // Whether triangle t shows its lit side to the vertex; a triangle in the vertex's own plane (the

@@ -64,9 +64,9 @@ std::vector<Rgb> punctual_irradiance(const Elements& e, const Surface& surface, 
           Rgb value = punctual_light_irradiance(lights[l], x, e.normal[i], &dir, &dist);
           if (dot(ng, dir) <= 0 || (options.cull_unlit && max_component(value) <= 0)) continue;
           Vec3 origin = x + ng * e.offset[i];
-          if (!options.shadow_rays ||
-              !tracer.occluded(origin, dir, 0.0f, std::isfinite(dist) ? dist * (1 - 1e-5f) : INFINITY))
-            sum += value;
+          sum += options.shadow_rays
+                     ? value * tracer.transmittance(origin, dir, 0.0f, std::isfinite(dist) ? dist * (1 - 1e-5f) : INFINITY)
+                     : value;
         }
         total += sum / float(rays);
       }

@@ -19,16 +19,30 @@ struct Hit {
   bool missed() const { return triangle == UINT32_MAX; }
 };
 
+class MaterialSampler;
+
+// Rays are asked three ways. Solid: every surface stops them (geometry: what is buried, what
+// faces what). For light, surfaces that let light through (cut-outs, partly transparent ones,
+// glazing; MaterialSampler::transmittance) do not: transmittance() multiplies what each lets
+// through, and intersect_light_path() lets a ray pass each with that probability.
 class RayTracer {
  public:
-  explicit RayTracer(const Surface& surface);
+  // Without `materials`, every surface is solid to every query.
+  explicit RayTracer(const Surface& surface, const MaterialSampler* materials = nullptr);
   ~RayTracer();
   RayTracer(const RayTracer&) = delete;
   RayTracer& operator=(const RayTracer&) = delete;
 
   // Directions must be unit length; distances are metres along them.
-  bool occluded(Vec3 origin, Vec3 direction, float t_near, float t_far) const;
-  Hit intersect(Vec3 origin, Vec3 direction, float t_near, float t_far) const;
+  bool occluded(Vec3 origin, Vec3 direction, float t_near, float t_far) const;  // solid
+  Hit intersect(Vec3 origin, Vec3 direction, float t_near, float t_far) const;  // solid
+  // The share of light that gets from the origin to t_far, 0..1: 0 when a solid surface is in the
+  // way, else the product of what each see-through surface passes.
+  float transmittance(Vec3 origin, Vec3 direction, float t_near, float t_far) const;
+  // The surface a ray of light stops at: a see-through one lets it pass with the probability of
+  // its transmittance there, decided by a hash of the ray and the triangle (so the same ray
+  // always makes the same choice, whatever the thread). Unbiased for light carried along the ray.
+  Hit intersect_light_path(Vec3 origin, Vec3 direction, float t_near, float t_far) const;
 
   uint64_t rays_cast() const;  // since construction, all threads
 

@@ -50,11 +50,26 @@ struct TextureRef {
   bool present() const { return image >= 0; }
 };
 
+// glTF alphaMode: how the base colour's alpha makes a surface partly absent.
+enum class AlphaMode {
+  Opaque,  // alpha ignored
+  Mask,    // present where alpha >= alpha_cutoff, absent elsewhere (leaves, fences, grilles)
+  Blend,   // a fraction alpha present: 1 - alpha of the light passes
+};
+
 struct Material {
   std::string name;
   Rgb base_color{1, 1, 1};  // linear, multiplies the sRGB-decoded base colour texture
-  float base_alpha = 1;
+  float base_alpha = 1;     // multiplies the base colour texture's alpha
   TextureRef base_color_texture;
+  AlphaMode alpha_mode = AlphaMode::Opaque;
+  float alpha_cutoff = 0.5f;
+  // Glazing, read as a thin pane: KHR_materials_transmission's factor is the share of the light
+  // that meets the pane and goes through it (specular, undeviated), KHR_materials_ior gives a clear
+  // pane's losses, and extras.visible_transmittance (0..1) a real glazing's measured one.
+  float transmission = 0;
+  float ior = 1.5f;
+  float visible_transmittance = -1;  // < 0: not given
   float metallic = 1;  // glTF default; diffuse reflectance is scaled by (1 - metallic)
   TextureRef metallic_roughness_texture;  // metallic in the blue channel
   Rgb emissive{0, 0, 0};  // linear emissiveFactor

@@ -55,14 +55,15 @@ std::vector<Rgb> sky_irradiance(const Elements& e, const Surface& surface, const
         const Vec3 origin = footprint_point(e, surface, i, cmj_sample(k, rays, origin_pattern)) + ng * e.offset[i];
         const Vec3 d = hemisphere_direction(e.normal[i], ng, cmj_sample(k, rays, direction_pattern));
         const float height = dot(d, up);
-        if (tracer.occluded(origin, d, 0.0f, INFINITY)) continue;
+        const float passes = tracer.transmittance(origin, d, 0.0f, INFINITY);
+        if (!(passes > 0)) continue;
         if (!(height > 0)) {
-          luminance += ground;
+          luminance += ground * passes;
           continue;
         }
         const double zenith = std::acos(std::fmin(1.0f, height));
         const double azimuth = std::atan2(double(dot(d, east)), double(dot(d, north)));
-        luminance += sky.zenith_luminance *
+        luminance += passes * sky.zenith_luminance *
                      relative_sky_luminance(sky.distribution, zenith, azimuth, sky.sun_zenith, sky.sun_azimuth);
       }
       // Cosine-distributed directions: E = pi * (mean luminance seen).
@@ -77,7 +78,7 @@ std::vector<Rgb> sky_irradiance(const Elements& e, const Surface& surface, const
           const Vec3 d = normalize(sun + (sun_t * float(std::cos(turn)) + sun_b * float(std::sin(turn))) *
                                              float(std::tan(radius)));
           const float incidence = dot(e.normal[i], d);
-          if (incidence > 0 && dot(ng, d) > 0 && !tracer.occluded(origin, d, 0.0f, INFINITY)) seen += incidence;
+          if (incidence > 0 && dot(ng, d) > 0) seen += incidence * tracer.transmittance(origin, d, 0.0f, INFINITY);
         }
         lux += sky.sun_illuminance * seen / sun_rays;
       }

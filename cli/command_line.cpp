@@ -189,6 +189,12 @@ bake options:
   --emission-scale X      multiply glTF emission before reading it as cd/m2, 1e-6..1e9 (default 1;
                           683 for Blender's exporter, which converts lamps to candela but not
                           emission)
+  --glazing-transmittance X
+                          visible transmittance of glazing (KHR_materials_transmission, read as a
+                          thin pane: the factor is the share of light meeting the glazing), 0..1,
+                          for materials without extras.visible_transmittance of their own
+                          (default: a clear pane of the material's KHR_materials_ior, 0.92 for
+                          glass; double glazing is about 0.8, solar control 0.4-0.7)
   --no-ambient            leave out the ambient estimate of the light still unshot
   --direct-only           direct light only: no light between surfaces
   --simulate-everything   skip nothing the effect plan would skip (one colour channel, no
@@ -552,6 +558,7 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
          if (size & (size - 1)) throw UsageError("option --patch-size must be 0 (auto) or a power of two up to 16384" + got(v));
          b.bake.patches.block_size = int(size);
        }},
+      {"--glazing-transmittance", [&](const std::string& v) { b.bake.glazing_transmittance = float(parse_number("--glazing-transmittance", v, 0, 1)); }},
       {"--emission-scale", [&](const std::string& v) { b.bake.emission_scale = float(parse_number("--emission-scale", v, 1e-6, 1e9)); }},
       {"--png-scale", [&](const std::string& v) { b.png_scale = v == "auto" ? 0.0f : float(parse_number("--png-scale", v, 1e-30, 1e30)); }},
       {"--display", [&](const std::string& v) {
@@ -649,6 +656,7 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
       {"vertex-refine", number(double(b.vertex_refine_triangles))},
       {"color-0", b.color_0 == Color0::Source ? "source" : b.color_0 == Color0::Light ? "light" : "prelit"},
       {"emission-scale", number(b.bake.emission_scale)},
+      {"glazing-transmittance", b.bake.glazing_transmittance >= 0 ? number(b.bake.glazing_transmittance) : "clear pane"},
       {"ambient", b.bake.solve.ambient_term ? "yes" : "no"},
       {"direct-only", b.bake.plan.direct_only ? "yes" : "no"},
       {"near-field", b.bake.near_field ? "yes" : "no"},

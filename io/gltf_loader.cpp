@@ -485,7 +485,9 @@ class SceneBuilder {
       auto it = in.extensions.find(extension);
       return it != in.extensions.end() && (factor == nullptr || number(it->second, factor, fallback) > 0);
     };
-    if (active("KHR_materials_transmission", "transmissionFactor", 0)) out.push_back("transmission (KHR_materials_transmission)");
+    if (active("KHR_materials_transmission", nullptr, 0) &&
+        in.extensions.at("KHR_materials_transmission").Has("transmissionTexture"))
+      out.push_back("the transmission texture (KHR_materials_transmission; its factor is read)");
     if (active("KHR_materials_diffuse_transmission", "diffuseTransmissionFactor", 0))
       out.push_back("diffuse transmission (KHR_materials_diffuse_transmission)");
     if (active("KHR_materials_volume", "thicknessFactor", 0)) out.push_back("volume (KHR_materials_volume)");
@@ -495,8 +497,6 @@ class SceneBuilder {
     if (active("KHR_materials_iridescence", "iridescenceFactor", 0)) out.push_back("iridescence (KHR_materials_iridescence)");
     if (active("KHR_materials_pbrSpecularGlossiness", nullptr, 0))
       out.push_back("specular-glossiness (KHR_materials_pbrSpecularGlossiness)");
-    if (in.alphaMode == "BLEND") out.push_back("transparency (alphaMode BLEND)");
-    if (in.alphaMode == "MASK") out.push_back("cut-outs (alphaMode MASK)");
     return out;
   }
 
@@ -519,6 +519,20 @@ class SceneBuilder {
       auto strength = in.extensions.find("KHR_materials_emissive_strength");
       if (strength != in.extensions.end()) m.emissive_strength = float(number(strength->second, "emissiveStrength", 1.0));
       m.double_sided = in.doubleSided;
+      m.alpha_mode = in.alphaMode == "MASK" ? AlphaMode::Mask : in.alphaMode == "BLEND" ? AlphaMode::Blend : AlphaMode::Opaque;
+      m.alpha_cutoff = float(in.alphaCutoff);
+      auto transmission = in.extensions.find("KHR_materials_transmission");
+      if (transmission != in.extensions.end())
+        m.transmission = std::clamp(float(number(transmission->second, "transmissionFactor", 0.0)), 0.0f, 1.0f);
+      auto ior = in.extensions.find("KHR_materials_ior");
+      if (ior != in.extensions.end()) m.ior = float(std::clamp(number(ior->second, "ior", 1.5), 1.0, 5.0));
+      if (in.extras.IsObject() && in.extras.Has("visible_transmittance")) {
+        const tinygltf::Value& tau = in.extras.Get("visible_transmittance");
+        const double value = tau.IsNumber() ? tau.GetNumberAsDouble() : -1;
+        if (!(value >= 0 && value <= 1))
+          throw InputError("material '" + clipped(in.name) + "': extras.visible_transmittance must be a number 0..1");
+        m.visible_transmittance = float(value);
+      }
       m.unsimulated = unsimulated_features(in);
       scene_.materials.push_back(std::move(m));
     }

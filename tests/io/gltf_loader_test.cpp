@@ -148,14 +148,40 @@ TEST(GltfLoader, MaterialTextureTransformEmissionAndSpotLightAreRead) {
 
 TEST(GltfLoader, MaterialFeaturesDiffuseRadiosityLeavesOutAreNamed) {
   const std::string material = R"({"alphaMode": "BLEND", "extensions": {
-      "KHR_materials_transmission": {"transmissionFactor": 0.9}, "KHR_materials_volume": {"thicknessFactor": 0.1},
+      "KHR_materials_transmission": {"transmissionFactor": 0.9, "transmissionTexture": {"index": 0}},
+      "KHR_materials_volume": {"thicknessFactor": 0.1},
       "KHR_materials_specular": {"specularFactor": 0.5}, "KHR_materials_clearcoat": {"clearcoatFactor": 0}}})";
-  Scene s = load_gltf(test::write_text_file("glass.gltf", one_triangle_gltf(material, ""))).scene;
+  const std::string one_texture = R"(, "textures": [{"source": 0}],
+      "images": [{"uri": "data:image/png;base64,iVBORw0KGgoAAAANSUhEUgAAAAEAAAABCAIAAACQd1PeAAAADElEQVR4nGP4z8AAAAMBAQDJ/pLvAAAAAElFTkSuQmCC"}])";
+  Scene s = load_gltf(test::write_text_file("glass.gltf", one_triangle_gltf(material, one_texture))).scene;
   ASSERT_EQ(s.materials.size(), 1u);
-  // A clearcoat factor of zero switches the clearcoat off: nothing to warn about.
+  // A clearcoat factor of zero switches the clearcoat off: nothing to warn about. Transmission's
+  // factor and BLEND are simulated (baker/material_sampler.h); its texture is not read.
   EXPECT_EQ(s.materials[0].unsimulated,
-            (std::vector<std::string>{"transmission (KHR_materials_transmission)", "volume (KHR_materials_volume)",
-                                      "specular (KHR_materials_specular)", "transparency (alphaMode BLEND)"}));
+            (std::vector<std::string>{"the transmission texture (KHR_materials_transmission; its factor is read)",
+                                      "volume (KHR_materials_volume)", "specular (KHR_materials_specular)"}));
+}
+
+TEST(GltfLoader, GlazingAndCutOutsAreRead) {
+  Scene glass = load_gltf(test::write_text_file("glazing.gltf", one_triangle_gltf(R"({"extensions": {
+      "KHR_materials_transmission": {"transmissionFactor": 0.9}, "KHR_materials_ior": {"ior": 1.6}},
+      "extras": {"visible_transmittance": 0.72}})", ""))).scene;
+  EXPECT_FLOAT_EQ(glass.materials[0].transmission, 0.9f);
+  EXPECT_FLOAT_EQ(glass.materials[0].ior, 1.6f);
+  EXPECT_FLOAT_EQ(glass.materials[0].visible_transmittance, 0.72f);
+  EXPECT_EQ(glass.materials[0].alpha_mode, AlphaMode::Opaque);
+  Scene leaves = load_gltf(test::write_text_file("leaves.gltf", one_triangle_gltf(R"({"alphaMode": "MASK", "alphaCutoff": 0.3})", ""))).scene;
+  EXPECT_EQ(leaves.materials[0].alpha_mode, AlphaMode::Mask);
+  EXPECT_FLOAT_EQ(leaves.materials[0].alpha_cutoff, 0.3f);
+  EXPECT_FLOAT_EQ(leaves.materials[0].transmission, 0);
+  EXPECT_LT(leaves.materials[0].visible_transmittance, 0);
+  try {
+    load_gltf(test::write_text_file("bad_glazing.gltf", one_triangle_gltf(R"({"name": "Pane", "extras": {"visible_transmittance": 1.5}})", "")));
+    FAIL() << "a visible transmittance of 1.5 was read";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("material 'Pane': extras.visible_transmittance must be a number 0..1"), std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(GltfLoader, TexturedAlbedoChangesTheBake) {
