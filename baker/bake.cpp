@@ -245,6 +245,21 @@ BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& optio
   result.vertex_values =
       clock.run("vertex values", [&] { return vertex_values(elements, surface, atlas, result.pages, stored); });
   check_vertex_values(result.vertex_values, scene);
+  if (!options.sensors.empty() || options.work_plane.enabled) {
+    result.sensors = options.sensors;
+    if (options.work_plane.enabled) {
+      result.work_plane = work_plane(scene, surface, *tracer, options.work_plane);
+      for (int32_t& k : result.work_plane.sensor_at)
+        if (k >= 0) k += int32_t(options.sensors.size());
+      result.sensors.insert(result.sensors.end(), result.work_plane.sensors.begin(), result.work_plane.sensors.end());
+    }
+    const std::vector<Rgb> exitance = radiosity.empty() ? radiosity_of(elements, result.irradiance) : radiosity;
+    result.sensor_lux = clock.run("sensors", [&] {
+      return sensor_illuminance(result.sensors, scene.lights, elements, exitance, surface, *tracer, options.sky,
+                                options.sensor, options.seed, progress);
+    });
+  }
+  report.surfaces = surface_statistics(scene, surface, elements, result.irradiance);
 
   for (const AtlasPage& p : surface.pages) report.page_texels += size_t(p.width) * p.height;
   report.elements = n;

@@ -18,8 +18,11 @@
 #include "baker/plan.h"
 #include "baker/progress.h"
 #include "baker/scene.h"
+#include "baker/sensor_points.h"
 #include "baker/sky_light.h"
 #include "baker/solve_radiosity.h"
+#include "baker/surface_statistics.h"
+#include "baker/work_plane.h"
 #include "uv/atlas.h"
 
 namespace radbake {
@@ -50,6 +53,9 @@ struct BakeOptions {
   GatherFilterOptions gather_filter;  // texel-space filtering of the gather's noise
   bool near_field = true;       // gather rays landing close by take the texel's exitance (final_gather.h)
   SkyLight sky;                 // a sky lighting the scene besides its lamps (sky_light.h); radiosity only
+  std::vector<Sensor> sensors;  // points in the air to measure illuminance at (sensor_points.h)
+  WorkPlaneOptions work_plane;  // and a grid of them over the floors
+  SensorOptions sensor;
   uint64_t seed = 1;            // same seed, same input: bit-identical output, whatever the thread count
   int threads = 0;              // 0: all cores
   StoredQuantity store = StoredQuantity::Irradiance;
@@ -86,6 +92,7 @@ struct BakeReport {
   uint32_t path_samples = 0;
   double path_relative_noise = 0;
   double path_mean_vertices = 0;
+  std::vector<SurfaceStatistics> surfaces;  // per instance, lux
   std::vector<std::string> warnings;
 };
 
@@ -97,6 +104,9 @@ struct BakeResult {
   std::vector<Rgb> direct;                         // its direct part, lux; empty unless keep_direct
   std::vector<uint32_t> patch_of_element;          // UINT32_MAX for buried elements
   std::vector<float> standard_error;               // Method::PathTrace: per element, lux; else empty
+  std::vector<Sensor> sensors;                     // BakeOptions::sensors, then the work plane's
+  std::vector<double> sensor_lux;                  // per sensor
+  WorkPlane work_plane;                            // its sensor_at indexes `sensors`
   BakeReport report;
 };
 

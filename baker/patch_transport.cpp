@@ -18,11 +18,13 @@ bool sees(const RayTracer& tracer, Vec3 from, Vec3 to) {
   return !(dist > 0) || !tracer.occluded(from, d / dist, 0.0f, dist);
 }
 
-// The element that stands for a hit point. Where a wall crosses a texel, the texel's element
-// lies on one side only; a hit on the other side belongs to the neighbour on its own side (or to
-// nobody), never to the element behind the wall, or light would pass through the wall. Likewise
-// across a cover's edge: a hit in the gap belongs to a texel under the cover, one in the open to a
-// texel in the open; where no neighbour holds the hit's side, the texel keeps it.
+}  // namespace
+
+// Where a wall crosses a texel, the texel's element lies on one side only; a hit on the other side
+// belongs to the neighbour on its own side (or to nobody), never to the element behind the wall,
+// or light would pass through the wall. Likewise across a cover's edge: a hit in the gap belongs
+// to a texel under the cover, one in the open to a texel in the open; where no neighbour holds the
+// hit's side, the texel keeps it.
 int64_t element_for_hit(const Elements& e, const Surface& surface, const RayTracer& tracer, const Hit& hit) {
   int64_t j = element_at_point(e, surface, hit.triangle, hit.bary);
   if (j < 0 || !(e.flags[size_t(j)] & kNearGeometry)) return j;
@@ -52,8 +54,6 @@ int64_t element_for_hit(const Elements& e, const Surface& surface, const RayTrac
       return around[k];
   return sees_j ? j : -1;
 }
-
-}  // namespace
 
 Landing land(const Elements& elements, const Patches& patches, const Surface& surface, const RayTracer& tracer,
              Vec3 origin, Vec3 direction) {

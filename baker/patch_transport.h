@@ -99,6 +99,10 @@ PatchTransport balanced_transport(const Patches& patches, MeasuredRows measured)
 // 0, 1, ..., n - 1: every patch.
 std::vector<uint32_t> all_patches(size_t n);
 
+// The element that stands for a hit point (the texel's on the hit's side of any wall or cover
+// crossing it), or -1 for none.
+int64_t element_for_hit(const Elements& elements, const Surface& surface, const RayTracer& tracer, const Hit& hit);
+
 // Where a ray from `origin` in `direction` lands: the element and patch it struck (UINT32_MAX for
 // none: it left the scene, or struck a back face or a buried texel) and how far away (infinite if
 // it left).

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "baker/material_sampler.h"
+#include "baker/sampling.h"
 
 namespace radbake {
 namespace {
@@ -30,14 +31,6 @@ struct QueryContext {
   int passed_count = 0;
 };
 
-uint64_t mix(uint64_t x) {  // splitmix64's finaliser
-  x ^= x >> 30;
-  x *= 0xbf58476d1ce4e5b9ull;
-  x ^= x >> 27;
-  x *= 0x94d049bb133111ebull;
-  return x ^ (x >> 31);
-}
-
 uint32_t float_bits(float f) {
   uint32_t bits;
   std::memcpy(&bits, &f, sizeof bits);
@@ -46,10 +39,10 @@ uint32_t float_bits(float f) {
 
 // The same ray and triangle always give the same number in [0, 1).
 float pass_chance(RTCRayN* ray, unsigned n, uint32_t primitive) {
-  uint64_t h = mix(primitive + 0x9e3779b97f4a7c15ull);
+  uint64_t h = mix64(primitive + 0x9e3779b97f4a7c15ull);
   for (float f : {RTCRayN_org_x(ray, n, 0), RTCRayN_org_y(ray, n, 0), RTCRayN_org_z(ray, n, 0), RTCRayN_dir_x(ray, n, 0),
                   RTCRayN_dir_y(ray, n, 0), RTCRayN_dir_z(ray, n, 0)})
-    h = mix(h ^ float_bits(f));
+    h = mix64(h ^ float_bits(f));
   return float(h >> 40) * 0x1p-24f;
 }
 

@@ -33,6 +33,8 @@ enum class Stream : uint64_t {
   Cover,
   PathTrace,
   Sky,
+  SensorSky,
+  SensorGather,
 };
 
 // A counter-based generator for one (seed, stream, key) triple.

@@ -35,6 +35,10 @@ struct SkyLight {
 // The direction the sun shines from, in the scene.
 Vec3 sun_direction(const SkyLight& sky);
 
+// At points in the air (sensors) facing `normals`, lux; each point's rays all start at it.
+std::vector<double> sky_illuminance_at(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
+                                       const RayTracer& tracer, const SkyLight& sky, uint64_t seed);
+
 // Per element, lux (grey: the sky is white).
 std::vector<Rgb> sky_irradiance(const Elements& elements, const Surface& surface, const RayTracer& tracer,
                                 const SkyLight& sky, uint64_t seed, Progress& progress);

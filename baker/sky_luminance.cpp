@@ -35,6 +35,40 @@ double indicatrix(const CieParameters& p, double from_sun) {
   return 1 + p.c * (std::exp(p.d * from_sun) - std::exp(p.d * half_pi)) + p.e * std::cos(from_sun) * std::cos(from_sun);
 }
 
+// The angle between a view and the sun, radians.
+double angle_from_sun(double zenith, double azimuth, double sun_zenith, double sun_azimuth) {
+  const double cos_from_sun = std::cos(sun_zenith) * std::cos(zenith) +
+                              std::sin(sun_zenith) * std::sin(zenith) * std::cos(azimuth - sun_azimuth);
+  return std::acos(std::fmax(-1.0, std::fmin(1.0, cos_from_sun)));
+}
+
+// The Perez sky's two factors, the same shape as the CIE sky's but with no normalising terms
+// (Perez, Seals, Michalsky 1993, eq. 1). Its gradation at the horizon is 1, the limit of
+// exp(b / cos Z) for b < 0.
+double perez_gradation(const PerezCoefficients& p, double zenith) {
+  const double c = std::cos(zenith);
+  return c > 0 ? 1 + p.a * std::exp(p.b / c) : 1.0;
+}
+
+double perez_indicatrix(const PerezCoefficients& p, double from_sun) {
+  const double cos_from_sun = std::cos(from_sun);
+  return 1 + p.c * std::exp(p.d * from_sun) + p.e * cos_from_sun * cos_from_sun;
+}
+
+double relative_perez_luminance(const PerezCoefficients& p, double zenith, double azimuth, double sun_zenith,
+                                double sun_azimuth) {
+  // With b >= 0, exp(b / cos Z) grows without bound toward the horizon and the luminance with it
+  // (to minus infinity when a < 0): coefficients fitted to real skies never do that.
+  if (!(p.b < 0))
+    throw std::invalid_argument("Perez sky coefficient b must be negative, got " + std::to_string(p.b));
+  const double at_zenith = perez_gradation(p, 0) * perez_indicatrix(p, sun_zenith);
+  if (!(at_zenith > 0))
+    throw std::invalid_argument("Perez sky coefficients give a zenith luminance of " + std::to_string(at_zenith) +
+                                " (not positive): nothing to be relative to");
+  const double from_sun = angle_from_sun(zenith, azimuth, sun_zenith, sun_azimuth);
+  return perez_gradation(p, zenith) * perez_indicatrix(p, from_sun) / at_zenith;
+}
+
 }  // namespace
 
 double relative_sky_luminance(const SkyDistribution& sky, double zenith, double azimuth, double sun_zenith,
@@ -45,13 +79,13 @@ double relative_sky_luminance(const SkyDistribution& sky, double zenith, double 
       return 1;
     case SkyModel::CieOvercast:
       return (1 + 2 * std::cos(zenith)) / 3;
+    case SkyModel::Perez:
+      return relative_perez_luminance(sky.perez, zenith, azimuth, sun_zenith, sun_azimuth);
     case SkyModel::CieGeneral:
       break;
   }
   const CieParameters& p = cie_parameters(sky.cie_type);
-  const double cos_from_sun = std::cos(sun_zenith) * std::cos(zenith) +
-                              std::sin(sun_zenith) * std::sin(zenith) * std::cos(azimuth - sun_azimuth);
-  const double from_sun = std::acos(std::fmax(-1.0, std::fmin(1.0, cos_from_sun)));
+  const double from_sun = angle_from_sun(zenith, azimuth, sun_zenith, sun_azimuth);
   return indicatrix(p, from_sun) * gradation(p, zenith) / (indicatrix(p, sun_zenith) * gradation(p, 0));
 }
 

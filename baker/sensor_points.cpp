@@ -1,0 +1,57 @@
+#include "baker/sensor_points.h"
+
+#include <tbb/parallel_for.h>
+
+#include <cmath>
+
+#include "baker/direct_light.h"
+#include "baker/patch_transport.h"
+#include "baker/sampling.h"
+
+namespace radbake {
+
+std::vector<double> sensor_illuminance(const std::vector<Sensor>& sensors, const std::vector<Light>& lights,
+                                       const Elements& elements, const std::vector<Rgb>& exitance,
+                                       const Surface& surface, const RayTracer& tracer, const SkyLight& sky,
+                                       const SensorOptions& options, uint64_t seed, Progress& progress) {
+  std::vector<double> lux(sensors.size(), 0.0);
+  if (sky.enabled) {
+    std::vector<Vec3> points, normals;
+    for (const Sensor& s : sensors) points.push_back(s.position), normals.push_back(s.normal);
+    lux = sky_illuminance_at(points, normals, tracer, sky, seed);
+  }
+  const uint32_t rays = std::max<uint32_t>(1, options.rays);
+  progress.begin("sensors", sensors.size());
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, sensors.size(), 4), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t i = r.begin(); i < r.end(); ++i) {
+      const Sensor& s = sensors[i];
+      // A point light seen from a point: one shadow ray is exact.
+      Rgb direct{};
+      for (const Light& light : lights) {
+        Vec3 to_light{};
+        float distance = 0;
+        const Rgb value = punctual_light_irradiance(light, s.position, s.normal, &to_light, &distance);
+        if (max_component(value) > 0)
+          direct += value * tracer.transmittance(s.position, to_light, 0.0f,
+                                                 std::isfinite(distance) ? distance * (1 - 1e-5f) : INFINITY);
+      }
+      // Cosine-distributed rays: E = pi * mean radiance = mean exitance of what they strike.
+      Rng rng(seed, Stream::SensorGather, i);
+      const uint32_t pattern = rng.next_u32();
+      Rgb seen{};
+      for (uint32_t k = 0; k < rays; ++k) {
+        const Vec3 d = cosine_direction(s.normal, cmj_sample(k, rays, pattern));
+        const Hit hit = tracer.intersect_light_path(s.position, d, 0.0f, INFINITY);
+        if (hit.missed() || !hit.front) continue;
+        const int64_t element = element_for_hit(elements, surface, tracer, hit);
+        if (element >= 0 && elements.valid(size_t(element))) seen += exitance[size_t(element)];
+      }
+      lux[i] += double(sum(direct + seen / float(rays))) / 3.0;
+    }
+    progress.advance(r.size());
+  });
+  progress.end();
+  return lux;
+}
+
+}  // namespace radbake

@@ -1,0 +1,36 @@
+// Illuminance at points that are not surfaces (a work plane in the air, points a user lists), as a
+// light meter held there reads it: lamps and the sky and sun by shadow rays from the point, and
+// the light every surface sends (its emission and what it reflects, from the finished bake) by
+// cosine-distributed rays that take the exitance of the texel they strike.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "baker/elements.h"
+#include "baker/math.h"
+#include "baker/progress.h"
+#include "baker/ray_tracer.h"
+#include "baker/scene.h"
+#include "baker/sky_light.h"
+#include "baker/surface.h"
+
+namespace radbake {
+
+struct Sensor {
+  Vec3 position;       // world space, metres
+  Vec3 normal{0, 1, 0};  // unit: which way the meter faces (up for a work plane)
+};
+
+struct SensorOptions {
+  uint32_t rays = 1024;  // hemisphere rays per sensor for the light surfaces send; noise ~ 1/sqrt
+};
+
+// Per sensor, lux (the mean of R, G and B, as the energy balance counts light). `exitance` is per
+// element, lm/m2 (emission plus reflected light); `sky` may be disabled.
+std::vector<double> sensor_illuminance(const std::vector<Sensor>& sensors, const std::vector<Light>& lights,
+                                       const Elements& elements, const std::vector<Rgb>& exitance,
+                                       const Surface& surface, const RayTracer& tracer, const SkyLight& sky,
+                                       const SensorOptions& options, uint64_t seed, Progress& progress);
+
+}  // namespace radbake
