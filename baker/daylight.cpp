@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "baker/errors.h"
+#include "baker/perez_sky.h"
 
 namespace radbake {
 namespace {
@@ -12,7 +13,30 @@ constexpr double kDegree = M_PI / 180;
 
 // ISO 15469 types 1, 3 and 5 have no indicatrix: their luminance does not depend on the sun.
 bool sky_follows_sun(const DaylightOptions& o) {
-  return o.sky == SkyKind::CieGeneral && o.cie_type != 1 && o.cie_type != 3 && o.cie_type != 5;
+  return o.sky == SkyKind::Perez ||
+         (o.sky == SkyKind::CieGeneral && o.cie_type != 1 && o.cie_type != 3 && o.cie_type != 5);
+}
+
+int day_of_year(const SiteAndTime& site) {
+  static const int before_month[12] = {0, 31, 59, 90, 120, 151, 181, 212, 243, 273, 304, 334};
+  const bool leap = (site.year % 4 == 0 && site.year % 100 != 0) || site.year % 400 == 0;
+  return before_month[site.month - 1] + site.day + (leap && site.month > 2 ? 1 : 0);
+}
+
+// The Perez model's sky for the site's hour, as the sky light takes it; the model's own refusals
+// as the user's errors.
+PerezSky weather_sky(const DaylightOptions& o, double sun_zenith_degrees) {
+  if (!o.site) throw InputError("sky perez needs the hour's site and time (--latitude, --longitude, --date, --time)");
+  if (o.direct_normal_irradiance < 0 || o.diffuse_horizontal_irradiance < 0)
+    throw InputError("sky perez needs the hour's weather: --direct-normal and --diffuse-horizontal irradiance in W/m2");
+  try {
+    return perez_sky(o.direct_normal_irradiance, o.diffuse_horizontal_irradiance, sun_zenith_degrees * kDegree,
+                     day_of_year(*o.site), o.dew_point);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(std::string("sky perez: ") + e.what());
+  } catch (const std::domain_error& e) {
+    throw InputError(std::string("sky perez: ") + e.what() + "; bake this hour under a CIE sky");
+  }
 }
 
 std::string sky_name(const DaylightOptions& o) {
@@ -20,6 +44,7 @@ std::string sky_name(const DaylightOptions& o) {
     case SkyKind::Uniform: return "uniform";
     case SkyKind::CieOvercast: return "cie-overcast";
     case SkyKind::CieGeneral: return "cie-" + std::to_string(o.cie_type);
+    case SkyKind::Perez: return "perez";
     case SkyKind::None: break;
   }
   return "none";
@@ -41,7 +66,9 @@ Daylight daylight_sky(const DaylightOptions& o) {
   if (o.sky == SkyKind::CieGeneral && o.cie_type >= 7 && !o.sun_illuminance)
     throw InputError("sky " + sky_name(o) +
                      " has a sun: give its direct normal illuminance in lux (--sun-illuminance, 0 for none)");
-  const double sun_lux = o.sun_illuminance.value_or(0.0);
+  if (o.sky == SkyKind::Perez && o.sun_illuminance)
+    throw InputError("sky perez takes the sun's illuminance from the weather (--direct-normal), not --sun-illuminance");
+  double sun_lux = o.sun_illuminance.value_or(0.0);
 
   DaylightSummary& s = out.summary;
   s.sky = sky_name(o);
@@ -68,8 +95,17 @@ Daylight daylight_sky(const DaylightOptions& o) {
   light.enabled = true;
   light.distribution.model = o.sky == SkyKind::Uniform       ? SkyModel::Uniform
                              : o.sky == SkyKind::CieOvercast ? SkyModel::CieOvercast
-                                                             : SkyModel::CieGeneral;
+                                                             : SkyModel::CieGeneral;  // Perez: below
   light.distribution.cie_type = o.cie_type;
+  double sky_lux = o.sky_illuminance;
+  if (o.sky == SkyKind::Perez) {
+    const PerezSky weather = weather_sky(o, s.sun_zenith);
+    light.distribution = weather.distribution;
+    sky_lux = weather.diffuse_horizontal_illuminance;
+    sun_lux = weather.direct_normal_illuminance;
+    s.perez_clearness = weather.clearness;
+    s.perez_brightness = weather.brightness;
+  }
   light.sun_zenith = s.sun_zenith * kDegree;
   light.sun_azimuth = s.sun_azimuth * kDegree;
   light.up = normalize(o.up);
@@ -81,14 +117,13 @@ Daylight daylight_sky(const DaylightOptions& o) {
   light.rays = o.sky_rays;
   light.sun_rays = o.sun_rays;
   light.zenith_luminance =
-      o.sky_illuminance /
-      horizontal_illuminance_over_zenith_luminance(light.distribution, light.sun_zenith, light.sun_azimuth);
+      sky_lux / horizontal_illuminance_over_zenith_luminance(light.distribution, light.sun_zenith, light.sun_azimuth);
   light.sun_illuminance = sun_lux;
 
   s.zenith_luminance = light.zenith_luminance;
-  s.sky_illuminance = o.sky_illuminance;
+  s.sky_illuminance = sky_lux;
   s.sun_illuminance = sun_lux;
-  s.exterior_horizontal_illuminance = o.sky_illuminance + sun_lux * std::cos(light.sun_zenith);
+  s.exterior_horizontal_illuminance = sky_lux + sun_lux * std::cos(light.sun_zenith);
   return out;
 }
 

@@ -17,6 +17,7 @@ enum class SkyKind {
   Uniform,      // the same luminance everywhere
   CieOvercast,  // the traditional CIE overcast sky (Moon and Spencer), for daylight factors
   CieGeneral,   // one of the 15 CIE standard general skies, `cie_type`
+  Perez,        // the Perez all-weather sky from an hour of weather (needs a site and time)
 };
 
 struct DaylightOptions {
@@ -24,6 +25,10 @@ struct DaylightOptions {
   int cie_type = 12;                         // with CieGeneral: 1..15
   double sky_illuminance = 10000;            // lux, unobstructed horizontal from the sky alone
   std::optional<double> sun_illuminance;     // lux, direct normal; unset: none (an error for skies 7..15)
+  // Perez: the weather's irradiance, W/m2 (< 0: not given), and its dew point (degrees C; unset:
+  // 2 cm of precipitable water).
+  double direct_normal_irradiance = -1, diffuse_horizontal_irradiance = -1;
+  std::optional<double> dew_point;
   // Where the sun is: from a site and a moment, or given (degrees, azimuth from north eastward).
   std::optional<SiteAndTime> site;
   std::optional<SunPosition> sun;
@@ -42,6 +47,7 @@ struct DaylightSummary {
   double sky_illuminance = 0;          // lux, unobstructed horizontal, sky alone
   double sun_illuminance = 0;          // lux, direct normal (0 when the sun is down or absent)
   double exterior_horizontal_illuminance = 0;  // lux, sky plus sun on an open horizontal plane
+  double perez_clearness = 0, perez_brightness = 0;  // epsilon and delta; 0 for other skies
 };
 
 struct Daylight {

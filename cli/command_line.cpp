@@ -208,12 +208,19 @@ daylight options (bake): a sky and a sun lighting the scene, besides its own lig
   --sky NAME              none | uniform | cie-overcast (the traditional CIE overcast sky, for
                           daylight factors) | cie-1 .. cie-15 (the CIE standard general skies,
                           ISO 15469: 1-6 overcast, 7-10 intermediate, 11-15 clear) | cie-clear
-                          (= cie-12) (default none)
+                          (= cie-12) | perez (the Perez all-weather sky and its sun from an hour
+                          of weather: --direct-normal, --diffuse-horizontal, a site and time)
+                          (default none)
   --sky-illuminance LUX   the sky's illuminance on an open horizontal plane, sun excluded
                           (default 10000)
   --sun-illuminance LUX   the sun's direct normal illuminance, lux (default none; skies cie-7 ..
                           cie-15 have a sun and need it: 0 for none); the sun is a 0.53 degree
                           disc, so shadow edges are soft
+  --direct-normal W/M2    perez: the hour's direct normal irradiance (a weather file's DNI)
+  --diffuse-horizontal W/M2
+                          perez: the hour's diffuse horizontal irradiance (DHI)
+  --dew-point C           perez: the dew point, for the luminous efficacy (default: 2 cm of
+                          precipitable water)
   --latitude DEG          site, north positive; with --longitude, --date and --time it places
   --longitude DEG         the sun (NREL SPA's conventions: east positive)
   --date YYYY-MM-DD       local date
@@ -326,6 +333,7 @@ void daylight_options(DaylightOptions& d, SiteInput& in, std::map<std::string, S
     if (v == "none") d.sky = SkyKind::None;
     else if (v == "uniform") d.sky = SkyKind::Uniform;
     else if (v == "cie-overcast") d.sky = SkyKind::CieOvercast;
+    else if (v == "perez") d.sky = SkyKind::Perez;
     else if (v == "cie-clear") {
       d.sky = SkyKind::CieGeneral;
       d.cie_type = 12;
@@ -334,11 +342,14 @@ void daylight_options(DaylightOptions& d, SiteInput& in, std::map<std::string, S
       d.sky = SkyKind::CieGeneral;
       d.cie_type = std::atoi(type);
     } else {
-      throw UsageError("option --sky must be none, uniform, cie-overcast, cie-clear or cie-1 .. cie-15" + got(v));
+      throw UsageError("option --sky must be none, uniform, cie-overcast, cie-clear, cie-1 .. cie-15 or perez" + got(v));
     }
   };
   with_value["--sky-illuminance"] = [&](const std::string& v) { d.sky_illuminance = parse_number("--sky-illuminance", v, 1e-6, 1e6); };
   with_value["--sun-illuminance"] = [&](const std::string& v) { d.sun_illuminance = parse_number("--sun-illuminance", v, 0, 2e5); };
+  with_value["--direct-normal"] = [&](const std::string& v) { d.direct_normal_irradiance = parse_number("--direct-normal", v, 0, 1500); };
+  with_value["--diffuse-horizontal"] = [&](const std::string& v) { d.diffuse_horizontal_irradiance = parse_number("--diffuse-horizontal", v, 0, 1500); };
+  with_value["--dew-point"] = [&](const std::string& v) { d.dew_point = parse_number("--dew-point", v, -90, 60); };
   with_value["--sun-position"] = [&](const std::string& v) {
     const std::vector<double> za = parse_numbers("--sun-position", v, 2, -360, 360);
     if (za[0] < 0 || za[0] > 180) throw UsageError("option --sun-position: the zenith angle must be 0..180 degrees" + got(v));
@@ -674,8 +685,10 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
   const DaylightOptions& d = b.daylight;
   if (d.sky != SkyKind::None) {
     b.effective.insert(b.effective.end(), {
-        {"sky", d.sky == SkyKind::Uniform ? "uniform" : d.sky == SkyKind::CieOvercast ? "cie-overcast"
-                                                                                        : "cie-" + number(d.cie_type)},
+        {"sky", d.sky == SkyKind::Uniform       ? "uniform"
+                : d.sky == SkyKind::CieOvercast ? "cie-overcast"
+                : d.sky == SkyKind::Perez       ? "perez"
+                                                : "cie-" + number(d.cie_type)},
         {"sky-illuminance", number(d.sky_illuminance)},
         {"sun-illuminance", number(d.sun_illuminance.value_or(0))},
         {"north", number(d.north.x) + "," + number(d.north.y) + "," + number(d.north.z)},
@@ -684,6 +697,11 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
         {"sun-rays", number(d.sun_rays)},
     });
     if (d.sun) b.effective.push_back({"sun-position", number(d.sun->zenith) + "," + number(d.sun->azimuth)});
+    if (d.sky == SkyKind::Perez) {
+      b.effective.push_back({"direct-normal", number(d.direct_normal_irradiance)});
+      b.effective.push_back({"diffuse-horizontal", number(d.diffuse_horizontal_irradiance)});
+      b.effective.push_back({"dew-point", d.dew_point ? number(*d.dew_point) : "none (2 cm of precipitable water)"});
+    }
     if (d.site) {
       char date[16];
       std::snprintf(date, sizeof date, "%04d-%02d-%02d", d.site->year, d.site->month, d.site->day);

@@ -16,6 +16,10 @@ nlohmann::ordered_json daylight_json(const std::optional<DaylightSummary>& dayli
                                 {"sky_horizontal_illuminance_lx", d.sky_illuminance},
                                 {"sun_direct_normal_illuminance_lx", d.sun_illuminance},
                                 {"exterior_horizontal_illuminance_lx", d.exterior_horizontal_illuminance}};
+  if (d.perez_clearness > 0) {
+    out["perez_clearness_epsilon"] = d.perez_clearness;
+    out["perez_brightness_delta"] = d.perez_brightness;
+  }
   if (d.sun_known) {
     out["sun_zenith_deg"] = d.sun_zenith;
     out["sun_azimuth_deg_from_north_eastward"] = d.sun_azimuth;

@@ -71,6 +71,27 @@ TEST(DaylightCli, ASunPlacedByASiteAndTimeAddsItsDirectNormalIlluminanceTimesCos
   EXPECT_LT(b.highest, 1.01 * expected);
 }
 
+TEST(DaylightCli, APerezSkyFromAnHourOfWeatherLightsTheFloorWithItsDiffuseAndDirectIlluminance) {
+  // gendaylit's clear case (tests/baker/perez_sky_test.cpp): 21 June noon at 40 N, 105 W (UTC-7),
+  // 700 W/m2 direct normal, 120 W/m2 diffuse horizontal. gendaylit 6.1a: epsilon 6.6905, diffuse
+  // 15,402 lx, direct normal 72,453 lx.
+  const Baked b = bake_in_daylight("open_floor", "perez",
+                                   "--sky perez --direct-normal 700 --diffuse-horizontal 120 --latitude 40 "
+                                   "--longitude -105 --utc-offset -7 --date 2026-06-21 --time 12:00");
+  const nlohmann::json& d = b.report["daylight"];
+  // 1e-3 bounds epsilon's dependence on the sun's zenith angle: gendaylit places the sun by its own
+  // year-less formula, we by SPA's for 2026 (0.02 degree apart here).
+  EXPECT_NEAR(double(d["perez_clearness_epsilon"]), 6.6905, 1e-3);
+  // 0.1% bounds the luminous efficacies against gendaylit's four printed digits and its sun.
+  EXPECT_NEAR(double(d["sky_horizontal_illuminance_lx"]), 15402, 0.001 * 15402);
+  EXPECT_NEAR(double(d["sun_direct_normal_illuminance_lx"]), 72453, 0.001 * 72453);
+  const double expected = double(d["exterior_horizontal_illuminance_lx"]);
+  // 1% bounds the sky rays' noise per texel under the Perez sky's circumsolar peak.
+  EXPECT_NEAR(b.mean, expected, 0.005 * expected);
+  EXPECT_GT(b.lowest, 0.99 * expected);
+  EXPECT_LT(b.highest, 1.01 * expected);
+}
+
 TEST(DaylightCli, NorthDecidesWhichWallTheSunFalls) {
   // A wall facing +X, the sun in the east 30 degrees up, under a uniform sky. With north along -Z
   // (the default) the wall faces east and gets E_n sin 60 from the sun; turned so that north is
@@ -110,7 +131,7 @@ INSTANTIATE_TEST_SUITE_P(
     Cases, DaylightCliRefuses,
     ::testing::Values(
         Refused{"no_light_at_all", "", "nothing"},
-        Refused{"unknown_sky", "--sky sunny", "--sky must be none, uniform, cie-overcast, cie-clear or cie-1 .. cie-15, got 'sunny'"},
+        Refused{"unknown_sky", "--sky sunny", "--sky must be none, uniform, cie-overcast, cie-clear, cie-1 .. cie-15 or perez, got 'sunny'"},
         Refused{"sky_type_16", "--sky cie-16", "--sky must be none"},
         Refused{"sunny_sky_without_sun", "--sky cie-12", "sky cie-12 has a sun"},
         Refused{"sun_without_position", "--sky cie-clear --sun-illuminance 1000", "needs the sun's position"},
@@ -127,7 +148,17 @@ INSTANTIATE_TEST_SUITE_P(
         Refused{"north_vertical", "--sky uniform --north 0,1,0", "north must not point straight up or down"},
         Refused{"ground_reflectance", "--sky uniform --ground-reflectance 1.5", "--ground-reflectance must be between 0 and 1"},
         Refused{"sun_below_ground_given", "--sky uniform --sun-illuminance 10 --sun-position 100,0", "below the horizon"},
-        Refused{"latitude", "--sky uniform --latitude 91", "--latitude must be between -90 and 90"}),
+        Refused{"latitude", "--sky uniform --latitude 91", "--latitude must be between -90 and 90"},
+        Refused{"perez_without_weather", "--sky perez --latitude 40 --longitude 0 --date 2026-06-21 --time 12:00",
+                "sky perez needs the hour's weather"},
+        Refused{"perez_with_sun_illuminance", "--sky perez --sun-illuminance 1000 --direct-normal 700 "
+                                              "--diffuse-horizontal 120 --latitude 40 --longitude 0 --date 2026-06-21 --time 12:00",
+                "not --sun-illuminance"},
+        Refused{"perez_without_site", "--sky perez --direct-normal 700 --diffuse-horizontal 120 --sun-position 30,180",
+                "sky perez needs the hour's site and time"},
+        Refused{"perez_more_than_the_sun_gives", "--sky perez --direct-normal 1400 --diffuse-horizontal 120 "
+                                                  "--latitude 40 --longitude 0 --date 2026-06-21 --time 12:00",
+                "sky perez: "}),
     [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace
