@@ -204,6 +204,8 @@ BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& optio
   Surface surface = clock.run("surface", [&] { return build_surface(scene, atlas); });
   MaterialSampler materials(scene, surface, options.emission_scale, options.glazing_transmittance);
   auto tracer = clock.run("ray tracer", [&] { return std::make_unique<RayTracer>(surface, &materials); });
+  // Before the light, so a work plane that finds no floor fails at once.
+  if (options.work_plane.enabled) result.work_plane = work_plane(scene, surface, *tracer, options.work_plane);
   ElementOptions element_options = options.elements;
   if (plan.exhaustive) element_options.filter = FootprintFilter::Everywhere;
   else if (!plan.texture_sampling) element_options.filter = FootprintFilter::BetweenMaterials;
@@ -248,7 +250,6 @@ BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& optio
   if (!options.sensors.empty() || options.work_plane.enabled) {
     result.sensors = options.sensors;
     if (options.work_plane.enabled) {
-      result.work_plane = work_plane(scene, surface, *tracer, options.work_plane);
       for (int32_t& k : result.work_plane.sensor_at)
         if (k >= 0) k += int32_t(options.sensors.size());
       result.sensors.insert(result.sensors.end(), result.work_plane.sensors.begin(), result.work_plane.sensors.end());

@@ -127,4 +127,14 @@ Daylight daylight_sky(const DaylightOptions& o) {
   return out;
 }
 
+double daylight_factor_reference(const DaylightOptions& o, const Daylight& daylight) {
+  const bool overcast = o.sky == SkyKind::CieOvercast || o.sky == SkyKind::Uniform ||
+                        (o.sky == SkyKind::CieGeneral && o.cie_type <= 6);
+  if (!overcast || daylight.summary.sun_illuminance > 0)
+    throw InputError("a daylight factor needs an overcast sky without a sun (--sky cie-overcast, uniform or cie-1 .. "
+                     "cie-6), not sky " + (o.sky == SkyKind::None ? std::string("none") : daylight.summary.sky) +
+                     (daylight.summary.sun_illuminance > 0 ? " with a sun" : ""));
+  return daylight.summary.sky_illuminance;
+}
+
 }  // namespace radbake

@@ -57,4 +57,9 @@ struct Daylight {
 
 Daylight daylight_sky(const DaylightOptions& options);
 
+// What a daylight factor divides by: the horizontal illuminance the sky gives an unobstructed
+// plane, lux. Defined for overcast skies without a sun (CIE overcast, a uniform sky, ISO 15469
+// types 1 to 6); throws InputError for any other.
+double daylight_factor_reference(const DaylightOptions& options, const Daylight& daylight);
+
 }  // namespace radbake

@@ -239,6 +239,28 @@ daylight options (bake): a sky and a sun lighting the scene, besides its own lig
   --sky-rays N            sky rays per texel (default 256)
   --sun-rays N            shadow rays per texel to the sun's disc (default 32)
 
+analysis options (bake): illuminance where there is no surface, and images to read it from
+  --work-plane M          a grid of sensors M metres over the floors, facing up (0.8 for desks,
+                          0 for circulation): OUTDIR/sensors.csv and the heat map work_plane.png
+                          (seen from above, -Z up, +X right), min, mean, max and uniformity (min
+                          / mean) in report.json and on stderr
+  --work-plane-spacing M  between the grid's points, along x and z (default 0.5)
+  --work-plane-over NAMES the floors, by node name (comma-separated parts of names) (default:
+                          under each point, the lowest surface facing up)
+  --sensors FILE.csv      points to measure at too: a line each, x,y,z or x,y,z,nx,ny,nz (metres;
+                          the meter faces +Y, up, unless given); a header line and # comments
+                          are skipped
+  --sensor-rays N         rays per sensor for the light surfaces send (default 1024)
+  --daylight-factor       under an overcast sky without a sun (cie-overcast, uniform, cie-1 ..
+                          cie-6): each sensor's and texel's illuminance over the unobstructed sky's
+                          horizontal illuminance, in percent: a column of sensors.csv,
+                          work_plane_daylight_factor.png and NAME_daylight_factor_N.png pages
+  --false-colour SCALE    linear | log: NAME_false_colour_N.png, each page in false colour with a
+                          legend in lux (log: three decades)
+  --false-colour-max X|auto
+                          the value at the top of the false-colour scales (default auto: the 99th
+                          percentile, rounded up to 1, 2, 2.5 or 5 x 10^k)
+
 diff options:
   --json                  machine-readable statistics on stdout
   --max-rmse PCT          fail when the relative RMSE exceeds PCT percent
@@ -569,6 +591,29 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
          if (size & (size - 1)) throw UsageError("option --patch-size must be 0 (auto) or a power of two up to 16384" + got(v));
          b.bake.patches.block_size = int(size);
        }},
+      {"--sensors", [&](const std::string& v) { b.sensor_file = v; }},
+      {"--sensor-rays", [&](const std::string& v) { b.bake.sensor.rays = uint32_t(parse_integer("--sensor-rays", v, 1, 1 << 24)); }},
+      {"--work-plane", [&](const std::string& v) {
+         b.bake.work_plane.enabled = true;
+         b.bake.work_plane.height = parse_number("--work-plane", v, 0, 1000);
+       }},
+      {"--work-plane-spacing", [&](const std::string& v) { b.bake.work_plane.spacing = parse_number("--work-plane-spacing", v, 0.001, 1000); }},
+      {"--work-plane-over", [&](const std::string& v) {
+         b.bake.work_plane.over.clear();
+         std::stringstream names(v);
+         for (std::string name; std::getline(names, name, ',');)
+           if (!name.empty()) b.bake.work_plane.over.push_back(name);
+         if (b.bake.work_plane.over.empty()) throw UsageError("option --work-plane-over needs names" + got(v));
+       }},
+      {"--false-colour", [&](const std::string& v) {
+         if (v == "linear") b.analysis.scale.logarithmic = false;
+         else if (v == "log") b.analysis.scale.logarithmic = true;
+         else throw UsageError("option --false-colour must be linear or log" + got(v));
+         b.analysis.false_colour_pages = true;
+       }},
+      {"--false-colour-max", [&](const std::string& v) {
+         b.analysis.scale.max = v == "auto" ? 0.0 : parse_number("--false-colour-max", v, 1e-9, 1e12);
+       }},
       {"--glazing-transmittance", [&](const std::string& v) { b.bake.glazing_transmittance = float(parse_number("--glazing-transmittance", v, 0, 1)); }},
       {"--emission-scale", [&](const std::string& v) { b.bake.emission_scale = float(parse_number("--emission-scale", v, 1e-6, 1e9)); }},
       {"--png-scale", [&](const std::string& v) { b.png_scale = v == "auto" ? 0.0f : float(parse_number("--png-scale", v, 1e-30, 1e30)); }},
@@ -600,6 +645,7 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
       {"--direct-only", [&] { b.bake.plan.direct_only = true; }},
       {"--no-near-field", [&] { b.bake.near_field = false; }},
       {"--simulate-everything", [&] { b.bake.plan.simulate_everything = true; }},
+      {"--daylight-factor", [&] { b.daylight_factor = true; }},
   };
   atlas_options(b.atlas, with_value, flags);
   load_options(b.load, with_value, flags);
@@ -625,6 +671,8 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
   if (b.bake.plan.direct_only && b.bake.plan.simulate_everything)
     throw UsageError("--direct-only and --simulate-everything contradict each other");
   finish_site(b.daylight, site);
+  if (b.daylight_factor && b.bake.store != StoredQuantity::Irradiance)
+    throw UsageError("--daylight-factor needs --store irradiance: it is the ratio of illuminances");
 
   // The report lists every option with the value the bake used, read back from the structs so
   // the listing cannot drift from the defaults.
@@ -667,6 +715,13 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
       {"vertex-refine", number(double(b.vertex_refine_triangles))},
       {"color-0", b.color_0 == Color0::Source ? "source" : b.color_0 == Color0::Light ? "light" : "prelit"},
       {"emission-scale", number(b.bake.emission_scale)},
+      {"sensors", b.sensor_file.empty() ? "none" : b.sensor_file},
+      {"sensor-rays", number(b.bake.sensor.rays)},
+      {"work-plane", b.bake.work_plane.enabled ? number(b.bake.work_plane.height) : "none"},
+      {"work-plane-spacing", number(b.bake.work_plane.spacing)},
+      {"daylight-factor", b.daylight_factor ? "yes" : "no"},
+      {"false-colour", !b.analysis.false_colour_pages ? "none" : b.analysis.scale.logarithmic ? "log" : "linear"},
+      {"false-colour-max", b.analysis.scale.max > 0 ? number(b.analysis.scale.max) : "auto"},
       {"glazing-transmittance", b.bake.glazing_transmittance >= 0 ? number(b.bake.glazing_transmittance) : "clear pane"},
       {"ambient", b.bake.solve.ambient_term ? "yes" : "no"},
       {"direct-only", b.bake.plan.direct_only ? "yes" : "no"},

@@ -10,6 +10,7 @@
 #include "baker/daylight.h"
 #include "baker/exposure.h"
 #include "baker/lightmap_difference.h"
+#include "io/analysis_outputs.h"
 #include "io/gltf.h"
 #include "uv/atlas.h"
 
@@ -32,6 +33,9 @@ struct BakeCommand {
   AtlasOptions atlas;
   BakeOptions bake;
   DaylightOptions daylight;  // made into bake.sky by daylight_sky() when the bake starts
+  std::string sensor_file;   // CSV of points to measure at; empty: none
+  bool daylight_factor = false;
+  AnalysisOptions analysis;
   float png_scale = 0;  // 0: automatic
   DisplayMode display = DisplayMode::Page;
   int display_detail = 0;      // pre-lit texels per lightmap texel along a side (1, 2, 4); 0: automatic

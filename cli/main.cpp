@@ -15,6 +15,7 @@
 #include "cli/diff_command.h"
 #include "cli/interrupts.h"
 #include "cli/progress_display.h"
+#include "io/analysis_outputs.h"
 #include "io/debug_dumps.h"
 #include "io/display_gltf.h"
 #include "io/gltf.h"
@@ -109,6 +110,16 @@ radbake::DisplaySummary write_display(const radbake::BakeCommand& cmd, const rad
   return summary;
 }
 
+// One line per set of readings: what a lighting report's summary table gives.
+void print_readings(const char* what, const radbake::ReadingSummary& lux, const radbake::ReadingSummary& percent) {
+  if (lux.count == 0) return;
+  std::fprintf(stderr, "radbake: %s: %zu points, min %.4g lx, mean %.4g lx, max %.4g lx, uniformity %.2f", what,
+               lux.count, lux.min, lux.mean, lux.max, lux.uniformity);
+  if (percent.count > 0)
+    std::fprintf(stderr, "; daylight factor min %.3g%%, mean %.3g%%, max %.3g%%", percent.min, percent.mean, percent.max);
+  std::fprintf(stderr, "\n");
+}
+
 int run_bake(const radbake::BakeCommand& cmd) {
   using namespace radbake;
   const auto start = std::chrono::steady_clock::now();
@@ -128,6 +139,10 @@ int run_bake(const radbake::BakeCommand& cmd) {
   options.sky = daylight.light;
   options.plan.sky = daylight.light.enabled;
   if (daylight.light.enabled) run.daylight = daylight.summary;
+  AnalysisOptions analysis = cmd.analysis;
+  analysis.lightmap_is_irradiance = cmd.bake.store == StoredQuantity::Irradiance;
+  if (cmd.daylight_factor) analysis.daylight_factor_reference = daylight_factor_reference(cmd.daylight, daylight);
+  if (!cmd.sensor_file.empty()) options.sensors = read_sensor_csv(cmd.sensor_file);
   const EffectPlan plan = plan_effects(loaded.scene, options.plan);
   if (!cmd.quiet)
     for (const PlanDecision& d : plan.decisions)
@@ -183,6 +198,7 @@ int run_bake(const radbake::BakeCommand& cmd) {
   engine.display_file = run.display.file;
   stop_if_interrupted();
   GltfOutput gltf = write_gltf(*loaded.source, loaded.scene, atlas, result.vertex_values, files, folder.path(), name, engine);
+  run.analysis = write_analysis(result, folder.path(), name, analysis);
   run.io_times.push_back({"write", seconds_since(t)});
 
   std::vector<std::string> warnings = loaded.scene.warnings;
@@ -198,8 +214,11 @@ int run_bake(const radbake::BakeCommand& cmd) {
   stop_if_interrupted();
   folder.commit();
 
-  if (!cmd.quiet)
+  if (!cmd.quiet) {
     for (const std::string& w : warnings) std::fprintf(stderr, "radbake: warning: %s\n", clipped(w, 600).c_str());
+    print_readings("sensors", run.analysis.sensors, run.analysis.sensors_daylight_factor);
+    print_readings("work plane", run.analysis.work_plane, run.analysis.work_plane_daylight_factor);
+  }
   char balance[64] = "energy balance not measured";
   if (result.report.balance.measured)
     std::snprintf(balance, sizeof balance, "energy balance %.3f%%", 100.0 * result.report.balance.relative_error);

@@ -27,6 +27,23 @@ nlohmann::ordered_json daylight_json(const std::optional<DaylightSummary>& dayli
   return out;
 }
 
+nlohmann::ordered_json readings_json(const ReadingSummary& lux, const ReadingSummary& percent) {
+  if (lux.count == 0) return nullptr;
+  nlohmann::ordered_json out = {{"points", lux.count}, {"min_lx", lux.min}, {"mean_lx", lux.mean},
+                                {"max_lx", lux.max}, {"uniformity_min_over_mean", lux.uniformity}};
+  if (percent.count > 0)
+    out["daylight_factor_percent"] = {{"min", percent.min}, {"mean", percent.mean}, {"max", percent.max}};
+  return out;
+}
+
+nlohmann::ordered_json surfaces_json(const std::vector<SurfaceStatistics>& surfaces) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::array();
+  for (const SurfaceStatistics& s : surfaces)
+    out.push_back({{"name", s.name}, {"area_m2", s.area}, {"mean_lx", s.mean}, {"min_lx", s.min},
+                   {"max_lx", s.max}, {"uniformity_min_over_mean", s.uniformity}});
+  return out;
+}
+
 }  // namespace
 
 void write_report(const std::string& path, const RunInfo& run, const Scene& scene, const Atlas& atlas,
@@ -115,6 +132,9 @@ void write_report(const std::string& path, const RunInfo& run, const Scene& scen
                      {"png_intensity", lightmaps.png_scale}}},
       {"display", display},
       {"daylight", daylight_json(run.daylight)},
+      {"sensors", readings_json(run.analysis.sensors, run.analysis.sensors_daylight_factor)},
+      {"work_plane", readings_json(run.analysis.work_plane, run.analysis.work_plane_daylight_factor)},
+      {"surfaces", surfaces_json(bake.surfaces)},
       {"warnings", warnings},
       {"files", run.files},
   };

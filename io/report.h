@@ -8,6 +8,7 @@
 
 #include "baker/bake.h"
 #include "baker/daylight.h"
+#include "io/analysis_outputs.h"
 #include "io/gltf.h"
 
 namespace radbake {
@@ -35,6 +36,7 @@ struct RunInfo {
   std::vector<std::string> files;  // everything written into the output folder, relative to it
   DisplaySummary display;
   std::optional<DaylightSummary> daylight;  // with a sky
+  AnalysisFiles analysis;
 };
 
 void write_report(const std::string& path, const RunInfo& run, const Scene& scene, const Atlas& atlas,

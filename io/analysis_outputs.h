@@ -1,0 +1,48 @@
+// The lighting-analysis files a bake writes on request: the sensors' readings as CSV, the work
+// plane as a heat map, false-colour lightmap pages (lux, or daylight factor) with legends, and the
+// statistics report.json gives (min, mean, max, uniformity).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "baker/bake.h"
+#include "io/false_colour.h"
+
+namespace radbake {
+
+struct AnalysisOptions {
+  bool false_colour_pages = false;  // NAME_false_colour_N.png: the stored quantity per texel
+  FalseColourScale scale;           // for the pages and the work plane (max 0: automatic each)
+  // The unobstructed sky's horizontal illuminance, lux: readings over it are daylight factors
+  // (CIE overcast sky). 0: no daylight factor.
+  double daylight_factor_reference = 0;
+  bool lightmap_is_irradiance = true;  // pages hold lux (else lm/m2: no daylight factor pages)
+};
+
+struct ReadingSummary {
+  size_t count = 0;
+  double min = 0, mean = 0, max = 0;  // arithmetic mean over the points (a regular grid: the area mean)
+  double uniformity = 0;              // min / mean (EN 12464's U0), 0 when the mean is 0
+};
+
+ReadingSummary summarise(const std::vector<double>& values);
+
+struct AnalysisFiles {
+  std::vector<std::string> files;  // written, relative to the folder
+  ReadingSummary sensors, work_plane;              // lux
+  ReadingSummary sensors_daylight_factor, work_plane_daylight_factor;  // percent, when asked
+};
+
+// Sensors from a CSV file: a line per point, "x,y,z" or "x,y,z,nx,ny,nz" in metres (the normal
+// defaults to +Y, up); an optional header line, blank lines and lines starting with '#' are
+// skipped. Throws InputError naming the file and line for anything else, and beyond max_points.
+std::vector<Sensor> read_sensor_csv(const std::string& path, size_t max_points = 1000000);
+
+// Writes into `folder`: sensors.csv (every sensor: position, normal, lux, and the daylight factor
+// in percent when asked), work_plane.png (and work_plane_daylight_factor.png) seen from above
+// with -Z up and +X right, NAME_false_colour_N.png and NAME_daylight_factor_N.png per page.
+AnalysisFiles write_analysis(const BakeResult& result, const std::string& folder, const std::string& name,
+                             const AnalysisOptions& options);
+
+}  // namespace radbake

@@ -1,0 +1,147 @@
+// The analysis files from the command line (issue 14): sensors from a CSV and on a work plane,
+// their readings as CSV and heat maps, daylight factors, false-colour pages, and the statistics in
+// report.json.
+#include <gtest/gtest.h>
+
+#include <OpenImageIO/imageio.h>
+
+#include <cmath>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "support/closed_forms.h"
+#include "support/commands.h"
+#include "support/scene_builders.h"
+
+namespace radbake {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string fixture(const std::string& name) { return test::source_path("tests/fixtures/" + name); }
+
+std::vector<std::vector<double>> csv_rows(const std::string& path) {
+  std::stringstream in(test::slurp(path));
+  std::string line;
+  std::getline(in, line);  // the header
+  std::vector<std::vector<double>> rows;
+  while (std::getline(in, line)) {
+    std::vector<double> row;
+    std::stringstream cells(line);
+    for (std::string cell; std::getline(cells, cell, ',');) row.push_back(std::stod(cell));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+int png_width(const std::string& path) {
+  auto in = OIIO::ImageInput::open(path);
+  return in ? in->spec().width : -1;
+}
+
+TEST(AnalysisCli, AWorkPlaneUnderAnOvercastSkyGivesLuxDaylightFactorsAndTheirImages) {
+  const std::string out = test::fresh_folder("analysis_cli_work_plane") + "/out";
+  const test::Outcome r = test::radbake("bake " + fixture("open_floor.gltf") + " -o " + out +
+                                        " --sky cie-overcast --sky-illuminance 8000 --work-plane 0.8"
+                                        " --work-plane-spacing 1 --daylight-factor --false-colour log");
+  ASSERT_EQ(r.status, 0) << r.err;
+  // The open 4 m floor: a 4 x 4 grid, each point facing the whole sky and nothing else (the floor
+  // is below it): 8,000 lx, a daylight factor of 100%.
+  const std::vector<std::vector<double>> rows = csv_rows(out + "/sensors.csv");
+  ASSERT_EQ(rows.size(), 16u);
+  for (const std::vector<double>& row : rows) {
+    ASSERT_EQ(row.size(), 8u);
+    EXPECT_NEAR(row[1], 0.8, 1e-4);  // over the floor at y = 0
+    // 0.1% bounds the sky rays' noise at a point (256 stratified rays over a 3:1 sky).
+    EXPECT_NEAR(row[6], 8000, 8);
+    EXPECT_NEAR(row[7], 100 * row[6] / 8000, 1e-3);
+  }
+  const nlohmann::json report = nlohmann::json::parse(test::slurp(out + "/report.json"));
+  EXPECT_EQ(report["work_plane"]["points"], 16);
+  EXPECT_NEAR(double(report["work_plane"]["mean_lx"]), 8000, 8);
+  EXPECT_GT(double(report["work_plane"]["uniformity_min_over_mean"]), 0.99);
+  EXPECT_NEAR(double(report["work_plane"]["daylight_factor_percent"]["mean"]), 100, 0.1);
+  ASSERT_EQ(report["surfaces"].size(), 1u);
+  EXPECT_NEAR(double(report["surfaces"][0]["area_m2"]), 16, 1e-3);
+  EXPECT_NEAR(double(report["surfaces"][0]["mean_lx"]), 8000, 8);
+  // The images, each with its legend beside the data.
+  for (const char* image : {"work_plane.png", "work_plane_daylight_factor.png", "open_floor_false_colour_0.png",
+                            "open_floor_daylight_factor_0.png"})
+    EXPECT_TRUE(fs::exists(out + "/" + image)) << image;
+  EXPECT_GT(png_width(out + "/open_floor_false_colour_0.png"), int(report["atlas"]["pages"][0]["width"]));
+  EXPECT_NE(r.err.find("radbake: work plane: 16 points, min"), std::string::npos) << r.err;
+  for (const char* listed : {"sensors.csv", "work_plane.png"})
+    EXPECT_NE(std::find(report["files"].begin(), report["files"].end(), listed), report["files"].end()) << listed;
+}
+
+TEST(AnalysisCli, SensorsFromACsvFileFaceTheWayTheyAreTold) {
+  const std::string csv = test::write_text_file("analysis_sensors.csv",
+                                                "x,y,z,nx,ny,nz\n"
+                                                "# over the middle, facing up\n"
+                                                "2,1,2\n"
+                                                "\n"
+                                                "2,1,2,0,-2,0\n");
+  const std::string out = test::fresh_folder("analysis_cli_csv") + "/out";
+  const test::Outcome r = test::radbake("bake " + fixture("open_floor.gltf") + " -o " + out + " --quiet --sensors " +
+                                        csv + " --sky uniform --sky-illuminance 10000 --ground-reflectance 0");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::vector<std::vector<double>> rows = csv_rows(out + "/sensors.csv");
+  ASSERT_EQ(rows.size(), 2u);
+  // Up: the uniform sky's 10,000 lx exactly (nothing in the way; float rounding).
+  EXPECT_NEAR(rows[0][6], 10000, 0.1);
+  EXPECT_NEAR(rows[1][4], -1, 1e-6);  // the normal is made unit length
+  // Down at the floor (reflectance 0.5, lit by the sky's 10,000 lx: 5,000 lm/m2): its exitance
+  // times the form factor of the 4 m square from 1 m over its middle (Howell B-3: 0.831). The sky
+  // below the horizon is the ground's, of reflectance 0. 2% bounds the 1,024 rays' noise.
+  const double floor = 5000 * test::point_to_rectangle(2, 2, 0, 4, 0, 4, 1);
+  EXPECT_NEAR(rows[1][6], floor, 0.02 * floor);
+}
+
+struct Refused {
+  const char* name;
+  std::string args;
+  std::string csv;  // written to a file named by --sensors when not empty
+  const char* says;
+};
+
+class AnalysisCliRefuses : public ::testing::TestWithParam<Refused> {};
+
+TEST_P(AnalysisCliRefuses, WithOneLineAndWritesNothing) {
+  const std::string parent = test::fresh_folder(std::string("analysis_cli_refused_") + GetParam().name);
+  std::string args = GetParam().args;
+  if (!GetParam().csv.empty())
+    args += " --sensors " + test::write_text_file(std::string("refused_") + GetParam().name + ".csv", GetParam().csv);
+  const test::Outcome r = test::radbake("bake " + fixture("open_floor.gltf") + " -o " + parent + "/out " + args);
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_EQ(r.err.rfind("radbake: error: ", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find(GetParam().says), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_FALSE(fs::exists(parent + "/out"));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, AnalysisCliRefuses,
+    ::testing::Values(
+        Refused{"daylight_factor_under_a_clear_sky", "--sky cie-clear --sun-illuminance 0 --sun-position 30,180 --daylight-factor", "",
+                "a daylight factor needs an overcast sky without a sun"},
+        Refused{"daylight_factor_with_a_sun", "--sky cie-overcast --sun-illuminance 1000 --sun-position 30,180 --daylight-factor", "",
+                "with a sun"},
+        Refused{"daylight_factor_without_a_sky", "--sky none --daylight-factor", "", "a daylight factor needs an overcast sky"},
+        Refused{"daylight_factor_of_radiosity", "--sky uniform --daylight-factor --store radiosity", "",
+                "--daylight-factor needs --store irradiance"},
+        Refused{"csv_with_two_numbers", "--sky uniform", "x,y,z\n1,2\n", "line 2: a sensor is x,y,z or x,y,z,nx,ny,nz"},
+        Refused{"csv_with_a_word", "--sky uniform", "1,2,3\n1,two,3\n", "line 2: a sensor is"},
+        Refused{"csv_with_nan", "--sky uniform", "1,2,nan\n", "line 1: a sensor is"},
+        Refused{"csv_with_a_zero_normal", "--sky uniform", "1,2,3,0,0,0\n", "line 1: the sensor's normal is zero"},
+        Refused{"csv_empty", "--sky uniform", "# nothing\n", "holds no sensor"},
+        Refused{"csv_missing", "--sky uniform --sensors /nonexistent/sensors.csv", "", "cannot read the sensor file"},
+        Refused{"work_plane_too_fine", "--quiet --sky uniform --work-plane 0.8 --work-plane-spacing 0.001", "",
+                "raise --work-plane-spacing"},
+        Refused{"work_plane_over_nothing", "--quiet --sky uniform --work-plane 0.8 --work-plane-over desk", "",
+                "no surface is named like the work plane's floors"},
+        Refused{"false_colour_unknown", "--sky uniform --false-colour rainbow", "", "--false-colour must be linear or log"}),
+    [](const auto& info) { return std::string(info.param.name); });
+
+}  // namespace
+}  // namespace radbake
