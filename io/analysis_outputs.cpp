@@ -114,9 +114,11 @@ AnalysisFiles write_analysis(const BakeResult& result, const std::string& folder
     }
     if (!csv) throw std::runtime_error("cannot write " + folder + "/sensors.csv");
     out.files.push_back("sensors.csv");
-    out.sensors = summarise(lux);
+    // The listed sensors come first, the work plane's after them; each set has its own summary.
+    const std::vector<double> listed(lux.begin(), lux.end() - ptrdiff_t(result.work_plane.sensors.size()));
+    out.sensors = summarise(listed);
     if (to_percent > 0) {
-      std::vector<double> percent(lux);
+      std::vector<double> percent(listed);
       for (double& v : percent) v *= to_percent;
       out.sensors_daylight_factor = summarise(percent);
     }

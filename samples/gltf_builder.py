@@ -105,7 +105,7 @@ class Gltf:
         return len(self.doc["accessors"]) - 1
 
     def material(self, name, base_color=(0.8, 0.8, 0.8), emissive=None, strength=None, double_sided=False,
-                 metallic=0.0, base_texture=None, emissive_texture=None):
+                 metallic=0.0, base_texture=None, emissive_texture=None, transmission=None, extras=None):
         m = {"name": name, "pbrMetallicRoughness": {"baseColorFactor": list(base_color) + [1.0],
                                                    "metallicFactor": metallic, "roughnessFactor": 1.0}}
         if base_texture is not None:
@@ -117,6 +117,11 @@ class Gltf:
         if strength is not None:
             m["extensions"] = {"KHR_materials_emissive_strength": {"emissiveStrength": strength}}
             self.extensions.add("KHR_materials_emissive_strength")
+        if transmission is not None:
+            m.setdefault("extensions", {})["KHR_materials_transmission"] = {"transmissionFactor": transmission}
+            self.extensions.add("KHR_materials_transmission")
+        if extras is not None:
+            m["extras"] = extras
         if double_sided:
             m["doubleSided"] = True
         self.doc["materials"].append(m)

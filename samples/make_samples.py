@@ -6,6 +6,9 @@ cornell_box/  The Cornell box from the published Cornell geometry (graphics.corn
               reflectances and its ceiling light.
 ferren/       After the Goral et al. (1984) demonstration: vertical boards, white on the side
               facing the viewer and brightly coloured on the back, lit from behind by a window.
+classroom/    A daylit classroom (issue 14's sample): 9 x 7 x 3 m, three windows in the south wall
+              (+Z; north is -Z) glazed with a visible transmittance of 0.7, a 1 m overhang over
+              them, twelve desks and a blackboard; no lamp: the sky and the sun light it.
 study_room/   The accuracy study's interior (docs/accuracy.md): a 4 x 3 x 2.6 m room lit by a
               window and a ceiling lamp, a table casting a shadow, and a bookcase standing 2 cm
               from a wall (a narrow gap light must not leak through).
@@ -148,7 +151,67 @@ def study_room():
     g.save(os.path.join(out, "study_room.gltf"), bin_name="study_room.bin")
 
 
+def classroom():
+    g = Gltf("radbake samples/make_samples.py")
+    plaster = g.material("plaster", (0.7, 0.68, 0.64))
+    ceiling = g.material("ceiling_tiles", (0.8, 0.8, 0.78))
+    floor = g.material("linoleum", (0.35, 0.3, 0.25))
+    board = g.material("blackboard", (0.06, 0.12, 0.08))
+    wood = g.material("desk_laminate", (0.55, 0.42, 0.28))
+    concrete = g.material("concrete", (0.45, 0.45, 0.43), double_sided=True)
+    # Clear double glazing: the pane lets 70% of the light through (extras.visible_transmittance).
+    glass = g.material("glazing", (0.9, 0.9, 0.9), transmission=1.0, extras={"visible_transmittance": 0.7},
+                       double_sided=True)
+    width, depth, height = 9.0, 7.0, 3.0
+    sill, head = 0.9, 2.5
+    windows = [(0.75, 2.75), (3.5, 5.5), (6.25, 8.25)]  # x ranges, 2 m wide each
+    inside = [width / 2, height / 2, depth / 2]
+    room = {
+        "floor": (floor, [[0, 0, 0], [width, 0, 0], [width, 0, depth], [0, 0, depth]]),
+        "ceiling": (ceiling, [[0, height, 0], [width, height, 0], [width, height, depth], [0, height, depth]]),
+        "wall_north": (plaster, [[0, 0, 0], [width, 0, 0], [width, height, 0], [0, height, 0]]),
+        "wall_west": (plaster, [[0, 0, 0], [0, 0, depth], [0, height, depth], [0, height, 0]]),
+        "wall_east": (plaster, [[width, 0, 0], [width, 0, depth], [width, height, depth], [width, height, 0]]),
+    }
+    for name, (material, poly) in room.items():
+        g.node(name, g.mesh(name, [facing(poly, inside)], material))
+    # The south wall around its openings: the band under the sills, the band over the heads and
+    # the piers between the windows.
+    z = depth
+    south = [[[0, 0, z], [width, 0, z], [width, sill, z], [0, sill, z]],
+             [[0, head, z], [width, head, z], [width, height, z], [0, height, z]]]
+    edges = [0.0] + [x for pair in windows for x in pair] + [width]
+    for a, b in zip(edges[0::2], edges[1::2]):
+        south.append([[a, sill, z], [b, sill, z], [b, head, z], [a, head, z]])
+    g.node("wall_south", g.mesh("wall_south", [facing(p, inside) for p in south], plaster))
+    for i, (a, b) in enumerate(windows):
+        pane = [[a, sill, z], [b, sill, z], [b, head, z], [a, head, z]]
+        g.node("window_%d" % i, g.mesh("window_%d" % i, [facing(pane, inside)], glass))
+    # The overhang: a 1 m concrete slab outside, level with the ceiling, the whole wall long.
+    slab = [[0, height, z], [width, height, z], [width, height, z + 1.0], [0, height, z + 1.0]]
+    g.node("overhang", g.mesh("overhang", [facing(slab, [width / 2, 0, z + 0.5])], concrete))
+    g.node("blackboard", g.mesh("blackboard", [facing([[2.5, 0.9, 0.01], [6.5, 0.9, 0.01], [6.5, 2.1, 0.01],
+                                                        [2.5, 2.1, 0.01]], inside)], board))
+    # Twelve desks in four rows facing the blackboard, 1.2 x 0.6 m tops at 0.72 m on four legs.
+    for row in range(4):
+        for col in range(3):
+            x, zc = 1.8 + 2.7 * col, 2.0 + 1.3 * row
+            name = "desk_%d_%d" % (row, col)
+            top = box_faces([x, 0.71, zc], [1.2, 0.04, 0.6])
+            g.node(name, g.mesh(name, list(top.values()), wood))
+            legs = []
+            for dx in (-0.55, 0.55):
+                for dz in (-0.25, 0.25):
+                    leg = box_faces([x + dx, 0.345, zc + dz], [0.04, 0.69, 0.04])
+                    legs += [leg[k] for k in ("+x", "-x", "+z", "-z")]
+            g.node(name + "_legs", g.mesh(name + "_legs", legs, wood))
+    out = os.path.join(HERE, "classroom")
+    os.makedirs(out, exist_ok=True)
+    g.save(os.path.join(out, "classroom.gltf"), bin_name="classroom.bin")
+
+
 if __name__ == "__main__":
+    classroom()
     cornell_box()
     ferren()
     study_room()

@@ -145,3 +145,52 @@ INSTANTIATE_TEST_SUITE_P(
 
 }  // namespace
 }  // namespace radbake
+
+namespace radbake {
+namespace {
+
+// The classroom sample as the README bakes it: readings per work plane point.
+std::vector<std::vector<double>> classroom_readings(const std::string& case_name, const std::string& sky) {
+  const std::string out = test::fresh_folder("analysis_cli_classroom_" + case_name) + "/out";
+  const test::Outcome r = test::radbake("bake " + test::source_path("samples/classroom/classroom.gltf") + " -o " + out +
+                                        " --quiet --work-plane 0.8 --work-plane-over floor " + sky);
+  EXPECT_EQ(r.status, 0) << r.err;
+  return r.status == 0 ? csv_rows(out + "/sensors.csv") : std::vector<std::vector<double>>{};
+}
+
+TEST(ClassroomSample, TheDaylightFactorFallsFromTheWindowsToTheBack) {
+  const auto rows = classroom_readings("overcast", "--sky cie-overcast --daylight-factor");
+  ASSERT_EQ(rows.size(), 252u);  // 18 x 14 points at 0.5 m over 9 x 7 m
+  double front = 0, back = 0;
+  for (const std::vector<double>& row : rows) {
+    // Every bit of light came through the glazing (transmittance 0.7) from a sky of 100%.
+    EXPECT_GT(row[7], 0);
+    EXPECT_LT(row[7], 70);
+    if (row[2] > 6.5) front += row[7] / 18;  // the row by the south windows (z = 6.75)
+    if (row[2] < 0.5) back += row[7] / 18;   // the row by the north wall (z = 0.25)
+  }
+  RecordProperty("front_row_daylight_factor_percent", std::to_string(front));
+  RecordProperty("back_row_daylight_factor_percent", std::to_string(back));
+  EXPECT_GT(front, 4 * back);
+  EXPECT_GT(back, 0.3);  // the interreflected light still reaches the back
+}
+
+TEST(ClassroomSample, TheDecemberSunReachesTheWorkPlaneInPatches) {
+  const auto rows = classroom_readings("december", "--sky cie-clear --sky-illuminance 5000 --sun-illuminance 22000 "
+                                                   "--latitude 51.5 --longitude -0.13 --utc-offset 0 --date 2026-12-21 --time 10:00");
+  ASSERT_EQ(rows.size(), 252u);
+  // The sun alone through the glazing on a horizontal plane: 0.7 x 22,000 lx x cos(79.25 degrees)
+  // = 2,870 lx. Sunlit points have at least that; the others far less (sky and walls only).
+  const double sun_on_the_plane = 0.7 * 22000 * std::cos(79.248 * M_PI / 180);
+  size_t sunlit = 0, shaded = 0;
+  for (const std::vector<double>& row : rows) {
+    sunlit += row[6] > sun_on_the_plane;
+    shaded += row[6] < 0.5 * sun_on_the_plane;
+  }
+  RecordProperty("sunlit_points", std::to_string(sunlit));
+  EXPECT_GT(sunlit, 50u);
+  EXPECT_GT(shaded, 50u);
+}
+
+}  // namespace
+}  // namespace radbake
