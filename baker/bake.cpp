@@ -223,9 +223,9 @@ BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& optio
   report.plan = plan.decisions;
   report.warnings = plan.warnings;
   if (options.method == Method::PathTrace) {
-    if (options.sky.enabled) throw InputError("the path tracer does not trace a sky yet: bake it with radiosity");
     PathTraced traced = clock.run("path tracing", [&] {
-      return path_trace(elements, surface, materials, scene.lights, *tracer, options.path_trace, options.seed, progress);
+      return path_trace(elements, surface, materials, scene.lights, &options.sky, *tracer, options.path_trace,
+                        options.seed, progress);
     });
     check_element_values("path tracing", traced.irradiance, checked);
     result.irradiance = std::move(traced.irradiance);

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <optional>
 
 #include "baker/direct_light.h"
 #include "baker/sampling.h"
@@ -128,8 +129,10 @@ constexpr uint32_t kBatches = 8;
 class PathTracer {
  public:
   PathTracer(const Elements& e, const Surface& surface, const MaterialSampler& materials,
-             const std::vector<Light>& lights, const RayTracer& tracer)
-      : e_(e), surface_(surface), materials_(materials), lights_(lights), tracer_(tracer), emitters_(surface, materials) {}
+             const std::vector<Light>& lights, const SkyLight* sky, const RayTracer& tracer)
+      : e_(e), surface_(surface), materials_(materials), lights_(lights), tracer_(tracer), emitters_(surface, materials) {
+    if (sky && sky->enabled) sky_.emplace(*sky);
+  }
 
   // One path's estimate of the irradiance at footprint point u of element i, lux; `bounces`
   // counts the surfaces it reached.
@@ -143,6 +146,8 @@ class PathTracer {
       const Vec3 direction = hemisphere_direction(v.shading_normal, v.geometric_normal, u);
       const Hit hit =
           tracer_.intersect_light_path(v.position + v.geometric_normal * v.offset, direction, 0.0f, INFINITY);
+      // Leaving the scene, the path sees the sky (pi L: directions are cosine-distributed).
+      if (hit.missed() && sky_) result += throughput * float(kPi * sky_->luminance(direction));
       // The back of a one-sided surface reflects nothing, as in the bake.
       if (hit.missed() || !hit.front) break;
       ++bounces;
@@ -178,6 +183,14 @@ class PathTracer {
       if (!(max_component(value) > 0) || dot(v.geometric_normal, to_light) <= 0) continue;
       total += value * tracer_.transmittance(origin, to_light, 0.0f,
                                              std::isfinite(distance) ? distance * (1 - 1e-5f) : INFINITY);
+    }
+    if (sky_ && sky_->sun_up()) {
+      const Vec3 d = sky_->toward_sun({rng.uniform(), rng.uniform()});
+      const float incidence = dot(v.shading_normal, d);
+      if (incidence > 0 && dot(v.geometric_normal, d) > 0) {
+        const float lux = float(sky_->sky().sun_illuminance) * incidence * tracer_.transmittance(origin, d, 0.0f, INFINITY);
+        total += Rgb{lux, lux, lux};
+      }
     }
     if (emitters_.empty()) return total;
     const D3 x = d3(origin);
@@ -251,17 +264,18 @@ class PathTracer {
   const std::vector<Light>& lights_;
   const RayTracer& tracer_;
   Emitters emitters_;
+  std::optional<SkyView> sky_;
 };
 
 }  // namespace
 
 PathTraced path_trace(const Elements& e, const Surface& surface, const MaterialSampler& materials,
-                      const std::vector<Light>& lights, const RayTracer& tracer, const PathTraceOptions& options,
-                      uint64_t seed, Progress& progress) {
+                      const std::vector<Light>& lights, const SkyLight* sky, const RayTracer& tracer,
+                      const PathTraceOptions& options, uint64_t seed, Progress& progress) {
   PathTraced out;
   out.irradiance.assign(e.size(), Rgb{});
   out.standard_error.assign(e.size(), 0.0f);
-  const PathTracer tracer_of_paths(e, surface, materials, lights, tracer);
+  const PathTracer tracer_of_paths(e, surface, materials, lights, sky, tracer);
   const uint32_t batches = std::min(kBatches, std::max<uint32_t>(2, options.samples));
   const uint32_t per_batch = std::max<uint32_t>(2, options.samples) / batches, n = batches * per_batch;
   std::atomic<uint64_t> total_bounces{0};

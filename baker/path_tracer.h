@@ -1,9 +1,10 @@
 // The independent reference: irradiance at every lightmap texel by unbiased Monte Carlo path
 // tracing over the same surfaces, materials, lights and units as the radiosity bake, with none of
 // its machinery (no patches, form factors, solve or gather). Each path starts at a point of the
-// texel's footprint, takes direct light from every punctual light and one sampled point of an
-// emitting triangle at every vertex (next-event estimation), and continues by cosine-distributed
-// bounces off Lambertian surfaces until Russian roulette ends it. Texel values converge to the
+// texel's footprint, takes direct light from every punctual light, one sampled point of an
+// emitting triangle and the sun at every vertex (next-event estimation), and continues by
+// cosine-distributed bounces off Lambertian surfaces until Russian roulette ends it or it leaves
+// the scene for the sky. Texel values converge to the
 // exact mean irradiance over the footprint; each comes with its standard error, estimated from
 // the spread of its own paths.
 #pragma once
@@ -16,6 +17,7 @@
 #include "baker/progress.h"
 #include "baker/ray_tracer.h"
 #include "baker/scene.h"
+#include "baker/sky_light.h"
 
 namespace radbake {
 
@@ -40,9 +42,11 @@ struct PathTraced {
 };
 
 // `materials` reads reflectance and emission at any surface point; `lights` are the scene's
-// punctual lights (every one is traced: the path tracer culls nothing).
+// punctual lights (every one is traced: the path tracer culls nothing). With `sky` (may be null or
+// disabled), a path that leaves the scene takes the sky's or the ground's luminance, and every
+// vertex takes the sun by a shadow ray to a point of its disc.
 PathTraced path_trace(const Elements& elements, const Surface& surface, const MaterialSampler& materials,
-                      const std::vector<Light>& lights, const RayTracer& tracer, const PathTraceOptions& options,
-                      uint64_t seed, Progress& progress);
+                      const std::vector<Light>& lights, const SkyLight* sky, const RayTracer& tracer,
+                      const PathTraceOptions& options, uint64_t seed, Progress& progress);
 
 }  // namespace radbake

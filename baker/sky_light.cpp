@@ -27,28 +27,41 @@ Vec3 sun_direction(const SkyLight& sky) {
   return normalize(c.up * std::cos(z) + (c.north * std::cos(a) + c.east * std::sin(a)) * std::sin(z));
 }
 
+SkyView::SkyView(const SkyLight& sky) : sky_(sky), sun_(sun_direction(sky)) {
+  const Compass c(sky);
+  up_ = c.up, north_ = c.north, east_ = c.east;
+  orthonormal_basis(sun_, sun_t_, sun_b_);
+  sun_up_ = sky.sun_illuminance > 0 && dot(sun_, up_) > 0;
+  ground_ = sky.ground_reflectance / M_PI *
+            (sky.zenith_luminance *
+                 horizontal_illuminance_over_zenith_luminance(sky.distribution, sky.sun_zenith, sky.sun_azimuth) +
+             (sun_up_ ? sky.sun_illuminance * dot(sun_, up_) : 0.0));
+}
+
+double SkyView::luminance(Vec3 d) const {
+  const float height = dot(d, up_);
+  if (!(height > 0)) return ground_;
+  const double zenith = std::acos(std::fmin(1.0f, height));
+  const double azimuth = std::atan2(double(dot(d, east_)), double(dot(d, north_)));
+  return sky_.zenith_luminance *
+         relative_sky_luminance(sky_.distribution, zenith, azimuth, sky_.sun_zenith, sky_.sun_azimuth);
+}
+
+Vec3 SkyView::toward_sun(Vec2 u) const {
+  const double radius = kSunRadius * std::sqrt(u.x), turn = 2 * M_PI * u.y;
+  return normalize(sun_ + (sun_t_ * float(std::cos(turn)) + sun_b_ * float(std::sin(turn))) * float(std::tan(radius)));
+}
+
 namespace {
 
-// What every point's sky rays share: the directions' frame, the sun's disc, the ground's luminance.
+// A point's sky rays: cosine-distributed over its hemisphere, and shadow rays to the sun's disc.
 struct SkyRays {
-  const SkyLight& sky;
+  SkyView view;
   const RayTracer& tracer;
-  Compass compass;
   uint32_t rays, sun_rays;
-  Vec3 sun, sun_t, sun_b;
-  bool sun_up;
-  double ground;  // cd/m2: lit by the whole sky and the sun
 
   SkyRays(const SkyLight& s, const RayTracer& t)
-      : sky(s), tracer(t), compass(s), rays(std::max<uint32_t>(1, s.rays)), sun_rays(std::max<uint32_t>(1, s.sun_rays)),
-        sun(sun_direction(s)) {
-    orthonormal_basis(sun, sun_t, sun_b);
-    sun_up = sky.sun_illuminance > 0 && dot(sun, compass.up) > 0;
-    ground = sky.ground_reflectance / M_PI *
-             (sky.zenith_luminance *
-                  horizontal_illuminance_over_zenith_luminance(sky.distribution, sky.sun_zenith, sky.sun_azimuth) +
-              (sun_up ? sky.sun_illuminance * dot(sun, compass.up) : 0.0));
-  }
+      : view(s), tracer(t), rays(std::max<uint32_t>(1, s.rays)), sun_rays(std::max<uint32_t>(1, s.sun_rays)) {}
 
   // Lux on a surface of shading normal n and geometric normal ng, rays from origin_of(u) for a
   // stratified u in the unit square (a point of a texel's footprint, or one point).
@@ -60,32 +73,20 @@ struct SkyRays {
     for (uint32_t k = 0; k < rays; ++k) {
       const Vec3 origin = origin_of(cmj_sample(k, rays, origin_pattern));
       const Vec3 d = hemisphere_direction(n, ng, cmj_sample(k, rays, direction_pattern));
-      const float height = dot(d, compass.up);
       const float passes = tracer.transmittance(origin, d, 0.0f, INFINITY);
-      if (!(passes > 0)) continue;
-      if (!(height > 0)) {
-        luminance += ground * passes;
-        continue;
-      }
-      const double zenith = std::acos(std::fmin(1.0f, height));
-      const double azimuth = std::atan2(double(dot(d, compass.east)), double(dot(d, compass.north)));
-      luminance += passes * sky.zenith_luminance *
-                   relative_sky_luminance(sky.distribution, zenith, azimuth, sky.sun_zenith, sky.sun_azimuth);
+      if (passes > 0) luminance += passes * view.luminance(d);
     }
     // Cosine-distributed directions: E = pi * (mean luminance seen).
     double lux = M_PI * luminance / rays;
-    if (!sun_up) return lux;
+    if (!view.sun_up()) return lux;
     double seen = 0;  // cos(incidence) over the disc's points that are not hidden
     for (uint32_t k = 0; k < sun_rays; ++k) {
       const Vec3 origin = origin_of(cmj_sample(k, sun_rays, sun_origin_pattern));
-      const Vec2 u = cmj_sample(k, sun_rays, sun_disc_pattern);
-      const double radius = kSunRadius * std::sqrt(u.x), turn = 2 * M_PI * u.y;
-      const Vec3 d =
-          normalize(sun + (sun_t * float(std::cos(turn)) + sun_b * float(std::sin(turn))) * float(std::tan(radius)));
+      const Vec3 d = view.toward_sun(cmj_sample(k, sun_rays, sun_disc_pattern));
       const float incidence = dot(n, d);
       if (incidence > 0 && dot(ng, d) > 0) seen += incidence * tracer.transmittance(origin, d, 0.0f, INFINITY);
     }
-    return lux + sky.sun_illuminance * seen / sun_rays;
+    return lux + view.sky().sun_illuminance * seen / sun_rays;
   }
 };
 

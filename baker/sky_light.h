@@ -35,6 +35,26 @@ struct SkyLight {
 // The direction the sun shines from, in the scene.
 Vec3 sun_direction(const SkyLight& sky);
 
+// What a ray that leaves the scene meets, and where the sun's disc is: shared by the sky's rays
+// and the path tracer's.
+class SkyView {
+ public:
+  explicit SkyView(const SkyLight& sky);
+  // cd/m2 toward unit `direction`: the sky's above the horizon, the ground's (rho E_h / pi, lit by
+  // the whole sky and the sun) below. The sun's disc is not in it: it is reached by toward_sun.
+  double luminance(Vec3 direction) const;
+  bool sun_up() const { return sun_up_; }
+  // A direction to a point of the sun's disc, spread uniformly over it by u in the unit square.
+  Vec3 toward_sun(Vec2 u) const;
+  const SkyLight& sky() const { return sky_; }
+
+ private:
+  const SkyLight& sky_;
+  Vec3 up_, north_, east_, sun_, sun_t_, sun_b_;
+  bool sun_up_ = false;
+  double ground_ = 0;  // cd/m2
+};
+
 // At points in the air (sensors) facing `normals`, lux; each point's rays all start at it.
 std::vector<double> sky_illuminance_at(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
                                        const RayTracer& tracer, const SkyLight& sky, uint64_t seed);
