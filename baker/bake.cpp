@@ -154,9 +154,12 @@ void compute_radiosity(const Scene& scene, const Elements& elements, const Surfa
   result.direct = clock.run("area lights", [&] {
     return emitter_irradiance(elements, surface, materials, tracer, direct, options.seed, progress);
   });
-  double delivered_power = 0;  // lm, mean of RGB, that punctual lights and the sky land on valid elements
+  // lm, mean of RGB, that punctual lights and the sky land on valid elements (where light passes
+  // through, only what stops there: the rest lands further on)
+  double delivered_power = 0;
   for (size_t i = 0; i < elements.size(); ++i) {
-    if (elements.valid(i)) delivered_power += double(sum(lights_and_sky[i])) / 3.0 * elements.area[i];
+    const double stops = elements.opacity.empty() ? 1.0 : elements.opacity[i];
+    if (elements.valid(i)) delivered_power += stops * double(sum(lights_and_sky[i])) / 3.0 * elements.area[i];
     result.direct[i] += lights_and_sky[i];
   }
   lights_and_sky = {};

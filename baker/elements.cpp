@@ -82,6 +82,9 @@ Elements build_elements(const Surface& surface, const MaterialSampler& materials
   for (size_t p = 0; p < surface.pages.size(); ++p)
     e.element_at[p].assign(size_t(surface.pages[p].width) * surface.pages[p].height, -1);
 
+  bool any_see_through = false;
+  for (uint32_t t = 0; t < surface.triangle_count() && !any_see_through; ++t) any_see_through = materials.see_through(t);
+  if (any_see_through) e.opacity.assign(n, 1.0f);
   const int k = std::max(1, options.footprint_samples);
   tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 1024), [&](const tbb::blocked_range<size_t>& r) {
     for (size_t i = r.begin(); i < r.end(); ++i) {
@@ -122,6 +125,7 @@ Elements build_elements(const Surface& surface, const MaterialSampler& materials
       if (whole_plane) e.flags[i] |= kFlatTexel;
 
       if (uniform) {
+        if (any_see_through) e.opacity[i] = 1 - materials.transmittance(t, bary);
         e.reflectance[i] = materials.reflectance(t, bary, 1.0f);
         e.emission[i] = materials.emission(t, bary, 1.0f);
         continue;
@@ -131,6 +135,7 @@ Elements build_elements(const Surface& surface, const MaterialSampler& materials
       const AtlasPage& page = surface.pages[largest->page];
       Vec2 corner{float(largest->texel % uint32_t(page.width)), float(largest->texel / uint32_t(page.width))};
       Rgb rho{}, emit{};
+      float stops = 0;
       int hits = 0;
       for (int sy = 0; sy < k; ++sy)
         for (int sx = 0; sx < k; ++sx) {
@@ -140,6 +145,7 @@ Elements build_elements(const Surface& surface, const MaterialSampler& materials
             if (!inside(b)) continue;
             rho += materials.reflectance(p->triangle, b, 1.0f / k);
             emit += materials.emission(p->triangle, b, 1.0f / k);
+            if (any_see_through) stops += 1 - materials.transmittance(p->triangle, b);
             ++hits;
             break;
           }
@@ -147,10 +153,12 @@ Elements build_elements(const Surface& surface, const MaterialSampler& materials
       if (hits == 0) {  // a sliver between the sample points: its own sample point decides
         rho = materials.reflectance(t, bary, 1.0f);
         emit = materials.emission(t, bary, 1.0f);
+        if (any_see_through) stops = 1 - materials.transmittance(t, bary);
         hits = 1;
       }
       e.reflectance[i] = rho / float(hits);
       e.emission[i] = emit / float(hits);
+      if (any_see_through) e.opacity[i] = stops / float(hits);
     }
   });
   for (size_t i = 0; i < n; ++i) e.element_at[e.page[i]][e.texel[i]] = int32_t(i);

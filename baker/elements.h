@@ -34,6 +34,9 @@ struct Elements {
   std::vector<float> area;        // m^2 of surface inside the texel
   std::vector<Rgb> reflectance;   // diffuse, averaged over the texel's footprint
   std::vector<Rgb> emission;      // exitance, lm/m2, averaged over the footprint
+  // The share of light arriving at the texel that stops there (1 minus what passes through a
+  // cut-out or glazing), averaged over the footprint; empty when no surface lets light through.
+  std::vector<float> opacity;
   std::vector<uint32_t> triangle; // the triangle holding the sample
   std::vector<uint32_t> page;
   std::vector<uint32_t> texel;    // y * page width + x

@@ -16,7 +16,10 @@ EnergyBalance energy_balance(const Elements& e, const Patches& patches, const Pa
   for (size_t i = 0; i < e.size(); ++i) {
     if (!e.valid(i)) continue;
     b.emitted += mean(e.emission[i]) * e.area[i];
-    Rgb absorbed = (Rgb{1, 1, 1} - e.reflectance[i]) * irradiance[i];
+    // Of the light arriving, a see-through texel stops its opacity's share (the rest goes on, to
+    // be counted where it lands), reflects rho of it and absorbs the difference.
+    const float stops = e.opacity.empty() ? 1.0f : e.opacity[i];
+    Rgb absorbed = (Rgb{stops, stops, stops} - e.reflectance[i]) * irradiance[i];
     b.absorbed += mean(absorbed) * e.area[i];
     if (patches.patch_of_element[i] != UINT32_MAX)
       leaving[patches.patch_of_element[i]] += mean(e.emission[i] + e.reflectance[i] * irradiance[i]) * e.area[i];

@@ -107,7 +107,7 @@ struct ExchangeMatrix {
   std::vector<Exchange> entries;
 };
 
-ExchangeMatrix symmetric_exchange(const Patches& patches, const std::vector<MeasuredRow>& rows) {
+ExchangeMatrix symmetric_exchange(const std::vector<float>& area, const std::vector<MeasuredRow>& rows) {
   const size_t n = rows.size();
   ExchangeMatrix g;
   g.start.assign(n + 1, 0);
@@ -118,7 +118,7 @@ ExchangeMatrix symmetric_exchange(const Patches& patches, const std::vector<Meas
   std::vector<uint64_t> fill(g.start.begin(), g.start.end() - 1);
   for (size_t p = 0; p < n; ++p)
     for (auto [q, f] : rows[p]) {
-      const float half = float(0.5 * double(patches.area[p]) * f);
+      const float half = float(0.5 * double(area[p]) * f);
       g.entries[fill[p]++] = {q, half};
       g.entries[fill[q]++] = {uint32_t(p), half};
     }
@@ -142,11 +142,16 @@ ExchangeMatrix symmetric_exchange(const Patches& patches, const std::vector<Meas
 // soon as G holds them (at a million texels each takes hundreds of MB).
 void balance_reciprocity(const Patches& patches, std::vector<MeasuredRow>&& rows, PatchTransport& out) {
   const size_t n = rows.size();
-  auto area = [&](size_t p) { return patches.area[p]; };
+  // Reciprocity holds between the areas that stop light: a ray meets a pane of glass or a cut-out
+  // only where it is opaque (with the probability of its opacity), while the pane's own rays all
+  // leave it, so A_p o_p F_pq = A_q o_q F_qp. With every patch opaque, the areas themselves.
+  std::vector<float> stopping_area = patches.area;
+  for (size_t p = 0; p < patches.opacity.size(); ++p) stopping_area[p] *= patches.opacity[p];
+  auto area = [&](size_t p) { return stopping_area[p]; };
   std::vector<double> target(n, 0);
   for (size_t p = 0; p < n; ++p)
     for (auto [q, f] : rows[p]) target[p] += double(area(p)) * f;
-  const ExchangeMatrix g = symmetric_exchange(patches, rows);
+  const ExchangeMatrix g = symmetric_exchange(stopping_area, rows);
   std::vector<MeasuredRow>().swap(rows);
   auto row = [&](size_t p) {
     return std::make_pair(g.entries.begin() + std::ptrdiff_t(g.start[p]), g.entries.begin() + std::ptrdiff_t(g.start[p + 1]));

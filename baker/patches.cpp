@@ -92,6 +92,7 @@ Patches patches_from_keys(const Elements& e, const Surface& surface, std::vector
     if (i == 0 || keys[i].key != keys[i - 1].key) {
       p.first_member.push_back(uint32_t(i));
       p.area.push_back(0);
+      if (!e.opacity.empty()) p.opacity.push_back(0);
       p.reflectance.push_back({});
       p.emission.push_back({});
       p.side.push_back(uint16_t(1u << ((keys[i].key >> 54) & 15)));
@@ -101,6 +102,7 @@ Patches patches_from_keys(const Elements& e, const Surface& surface, std::vector
     p.members.push_back(el);
     p.patch_of_element[el] = uint32_t(patch);
     p.area[patch] += e.area[el];
+    if (!e.opacity.empty()) p.opacity[patch] += e.opacity[el] * e.area[el];
     p.reflectance[patch] += e.reflectance[el] * e.area[el];
     p.emission[patch] += e.emission[el] * e.area[el];
   }
@@ -108,6 +110,7 @@ Patches patches_from_keys(const Elements& e, const Surface& surface, std::vector
   for (size_t q = 0; q < p.size(); ++q) {
     float inv = p.area[q] > 0 ? 1.0f / p.area[q] : 0.0f;
     p.reflectance[q] *= inv;
+    if (!p.opacity.empty()) p.opacity[q] = p.area[q] > 0 ? p.opacity[q] * inv : 1.0f;
     p.emission[q] *= inv;
   }
   return p;

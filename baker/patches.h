@@ -16,6 +16,7 @@ struct Patches {
   std::vector<float> area;             // m^2
   std::vector<Rgb> reflectance;        // area-weighted mean of the members
   std::vector<Rgb> emission;           // area-weighted mean exitance, lm/m2
+  std::vector<float> opacity;          // area-weighted mean of the members' (Elements::opacity); empty: all 1
   std::vector<uint16_t> side;          // texels per side of the block each patch was cut from
   std::vector<uint32_t> patch_of_element;  // UINT32_MAX for buried elements
   int block_size = 1;                  // texels per side of the coarsest blocks

@@ -177,7 +177,9 @@ int run(int argc, char** argv) {
 
   auto start = std::chrono::steady_clock::now();
   const double cpu_start = cpu_seconds();
-  BakeResult result = bake(study.scene, atlas, cl.bake.bake);
+  BakeOptions options = cl.bake.bake;
+  options.sky = daylight_sky(cl.bake.daylight).light;
+  BakeResult result = bake(study.scene, atlas, options);
   const double cpu = cpu_seconds() - cpu_start;
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 

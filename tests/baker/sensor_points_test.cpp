@@ -123,6 +123,23 @@ TEST(WorkPlane, AGridAtAHeightOverTheNamedFloorsOnly) {
   }
 }
 
+TEST(WorkPlane, AtHeightZeroItIsNotShadedByTheFloorItLiesOn) {
+  Scene scene;
+  const int grey = test::add_material(scene, {0.5f, 0.5f, 0.5f});
+  test::add_quad(scene, {0, 0, 2}, {2, 0, 0}, {0, 0, -2}, grey, "floor");
+  BakeOptions options;
+  options.sky.enabled = true;
+  options.sky.distribution.model = SkyModel::Uniform;
+  options.sky.zenith_luminance = 1000;
+  options.sky.rays = 64;
+  options.work_plane.enabled = true;
+  options.work_plane.height = 0;
+  const BakeResult r = test::bake_scene(scene, coarse(), options).result;
+  ASSERT_EQ(r.sensors.size(), 16u);
+  // pi L at every point: 1e-4 bounds float rounding; a ray stopped by the floor would take 1/64.
+  for (double lux : r.sensor_lux) EXPECT_NEAR(lux, M_PI * 1000, 1e-4 * M_PI * 1000);
+}
+
 TEST(SurfaceStatistics, PerInstanceAreaMeanAndUniformity) {
   Scene scene;
   const int grey = test::add_material(scene, {0.5f, 0.5f, 0.5f});

@@ -1,6 +1,7 @@
 // Closed forms the tests measure the baker against, computed independently of baker/ in double.
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include "baker/math.h"
@@ -29,5 +30,45 @@ double centred_rectangle_solid_angle(double a, double b, double d);
 // Irradiance in lux from a point light of `candela` at `light` on a surface at x with unit normal
 // n, unoccluded: I cos(theta) / d^2, zero behind the surface.
 double point_light_lux(double candela, Vec3 light, Vec3 x, Vec3 n);
+
+// Daylight through openings, for CIE 171's cases 5.9 to 5.12, in double precision throughout.
+struct Vec3d {
+  double x = 0, y = 0, z = 0;
+};
+inline Vec3d to_double(Vec3 v) { return {v.x, v.y, v.z}; }
+
+// The skies of CIE 171's daylight tables, relative to the zenith luminance, for a view at `zenith`
+// and `azimuth` with the sun at `sun_zenith`, `sun_azimuth` (radians; azimuths measured alike, from
+// the same direction), zero below the horizon. Types 1 to 15 are the CIE standard general skies
+// (ISO 15469:2004 / CIE S 011/E:2003, Table 1's gradation a, b and indicatrix c, d, e), written here
+// from the standard and not from baker/; 16 is the traditional CIE overcast sky (1 + 2 cos Z) / 3,
+// the sixteenth row of the report's tables.
+double cie171_sky_luminance(int type, double zenith, double azimuth, double sun_zenith, double sun_azimuth);
+
+// The illuminance an unobstructed horizontal plane gets from that sky over its zenith luminance,
+// E_hz / L_z (sr): the midpoint rule in cos Z and azimuth on a 400 x 800 grid (not the baker's
+// quadrature in Z). What CIE 171's sky components are percentages of.
+double cie171_sky_horizontal_illuminance(int type, double sun_zenith, double sun_azimuth);
+
+// The directional transmittance of CIE 171's 6 mm clear glass (cases 5.10, 5.12) at an angle of
+// incidence of cosine c: the fifth-degree polynomial in c of Tregenza and Sharples' daylight
+// algorithms (section 2.34), which the report gives (as quoted on radiance-online's "Glass
+// transmittance" thread, 2017; with it the report's glazed tables come out to their rounding):
+// 0.8788 at normal incidence, falling to 0 at grazing (held at 0 within half a degree of it, where
+// the fit dips below).
+double clear_glass_transmittance(double cos_incidence);
+
+// Luminance (cd/m2) seen through the opening point `through` in the unit direction `direction`.
+using SeenLuminance = std::function<double(Vec3d through, Vec3d direction)>;
+
+// The illuminance (lux) at x, unit normal n, from what it sees through a flat parallelogram opening
+// corner + s u + t v (s, t in [0, 1]), all of which x sees: the integral over the opening of
+// L(q, d) cos(theta_x) cos(theta_q) / r^2 dA, q a point of the opening and d the unit direction
+// from x through it. Gauss-Legendre (4 x 4 points) on cells halved until each is smaller than a
+// quarter of its distance from x, so points beside the opening's edge are integrated as well as
+// points far from it (a uniform luminance gives Howell's and Lambert's view factors to 1e-10, 0.25 m
+// from the edge too). The luminance must be smooth over the opening: split the opening where it
+// jumps (at the horizon seen through a facade, at the edge of an overhang) and add the parts.
+double illuminance_through_opening(Vec3d x, Vec3d n, Vec3d corner, Vec3d u, Vec3d v, const SeenLuminance& luminance);
 
 }  // namespace radbake::test
