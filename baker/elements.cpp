@@ -125,7 +125,7 @@ Elements build_elements(const Surface& surface, const MaterialSampler& materials
       if (whole_plane) e.flags[i] |= kFlatTexel;
 
       if (uniform) {
-        if (any_see_through) e.opacity[i] = 1 - materials.transmittance(t, bary);
+        if (any_see_through) e.opacity[i] = 1 - materials.diffuse_transmittance(t, bary);
         e.reflectance[i] = materials.reflectance(t, bary, 1.0f);
         e.emission[i] = materials.emission(t, bary, 1.0f);
         continue;
@@ -145,7 +145,7 @@ Elements build_elements(const Surface& surface, const MaterialSampler& materials
             if (!inside(b)) continue;
             rho += materials.reflectance(p->triangle, b, 1.0f / k);
             emit += materials.emission(p->triangle, b, 1.0f / k);
-            if (any_see_through) stops += 1 - materials.transmittance(p->triangle, b);
+            if (any_see_through) stops += 1 - materials.diffuse_transmittance(p->triangle, b);
             ++hits;
             break;
           }
@@ -153,7 +153,7 @@ Elements build_elements(const Surface& surface, const MaterialSampler& materials
       if (hits == 0) {  // a sliver between the sample points: its own sample point decides
         rho = materials.reflectance(t, bary, 1.0f);
         emit = materials.emission(t, bary, 1.0f);
-        if (any_see_through) stops = 1 - materials.transmittance(t, bary);
+        if (any_see_through) stops = 1 - materials.diffuse_transmittance(t, bary);
         hits = 1;
       }
       e.reflectance[i] = rho / float(hits);

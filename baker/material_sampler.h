@@ -39,10 +39,14 @@ class MaterialSampler {
 
   // How much of the surface is there, 0..1: alpha under BLEND, 0 or 1 under MASK, else 1.
   float coverage(uint32_t triangle, Vec2 bary, float spacing) const;
-  // The share of light that goes straight through the surface at a point, 0..1: where it is
-  // absent, and through its glazing where it is there. At full texture resolution (cut-outs are
-  // as sharp as their texture).
-  float transmittance(uint32_t triangle, Vec2 bary) const;
+  // The share of light travelling along `direction` that goes straight through the surface at a
+  // point, 0..1: where it is absent, and through its glazing where it is there (the visible
+  // transmittance along the normal, less at oblique incidence as for a clear pane of the
+  // material's KHR_materials_ior). At full texture resolution: cut-outs are as sharp as their
+  // texture.
+  float transmittance(uint32_t triangle, Vec2 bary, Vec3 direction) const;
+  // The same for light arriving from the whole hemisphere alike (cosine-weighted).
+  float diffuse_transmittance(uint32_t triangle, Vec2 bary) const;
   // False for the triangles every ray stops at (opaque and no glazing): most of them.
   bool see_through(uint32_t triangle) const;
 
@@ -70,7 +74,8 @@ class MaterialSampler {
   std::map<std::pair<int, Decode>, int> texture_of_image_;  // (image, decoding) -> textures_
   // Per material: index into textures_ for base colour, metallic, emission (-1 when absent).
   std::vector<int> base_texture_, metallic_texture_, emissive_texture_, alpha_texture_;
-  std::vector<float> pane_transmittance_;  // per material: what its glazing lets through where it is there
+  std::vector<float> pane_transmittance_;  // per material: what its glazing lets through along its normal
+  std::vector<float> pane_diffuse_ratio_;  // per material: its diffuse transmittance over that
 };
 
 }  // namespace radbake

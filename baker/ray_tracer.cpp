@@ -51,8 +51,10 @@ void see_through_filter(const RTCFilterFunctionNArguments* args) {
   if (c->query == Query::Solid || args->valid[0] == 0) return;
   const uint32_t primitive = RTCHitN_primID(args->hit, args->N, 0);
   const uint32_t triangle = c->triangle_of_primitive[primitive];
-  const float passes =
-      c->materials->transmittance(triangle, {RTCHitN_u(args->hit, args->N, 0), RTCHitN_v(args->hit, args->N, 0)});
+  const Vec3 direction{RTCRayN_dir_x(args->ray, args->N, 0), RTCRayN_dir_y(args->ray, args->N, 0),
+                       RTCRayN_dir_z(args->ray, args->N, 0)};
+  const float passes = c->materials->transmittance(
+      triangle, {RTCHitN_u(args->hit, args->N, 0), RTCHitN_v(args->hit, args->N, 0)}, direction);
   if (c->query == Query::LightPath) {
     if (pass_chance(args->ray, args->N, primitive) < passes) args->valid[0] = 0;
     return;

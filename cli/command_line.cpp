@@ -190,11 +190,12 @@ bake options:
                           683 for Blender's exporter, which converts lamps to candela but not
                           emission)
   --glazing-transmittance X
-                          visible transmittance of glazing (KHR_materials_transmission, read as a
-                          thin pane: the factor is the share of light meeting the glazing), 0..1,
-                          for materials without extras.visible_transmittance of their own
-                          (default: a clear pane of the material's KHR_materials_ior, 0.92 for
-                          glass; double glazing is about 0.8, solar control 0.4-0.7)
+                          visible transmittance of glazing along its normal (KHR_materials_
+                          transmission, read as a thin pane: the factor is the share of light
+                          meeting the glazing; obliquely it passes less, as a clear pane of the
+                          material's KHR_materials_ior), 0..1, for materials without
+                          extras.visible_transmittance of their own (default: a clear pane's,
+                          0.92 for glass; double glazing is about 0.8, solar control 0.4-0.7)
   --no-ambient            leave out the ambient estimate of the light still unshot
   --direct-only           direct light only: no light between surfaces
   --simulate-everything   skip nothing the effect plan would skip (one colour channel, no

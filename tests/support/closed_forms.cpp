@@ -149,6 +149,13 @@ double clear_glass_transmittance(double c) {
   return std::max(0.0, t);  // the fit dips to -0.028 within half a degree of grazing
 }
 
+double thin_pane_transmittance(double c, double n) {
+  if (!(c > 0)) return 0;
+  const double s = std::sqrt(1 - c * c) / n, t = std::sqrt(1 - s * s);  // the refracted ray's sine and cosine
+  const double r_s = std::pow((c - n * t) / (c + n * t), 2), r_p = std::pow((t - n * c) / (t + n * c), 2);
+  return 0.5 * ((1 - r_s) / (1 + r_s) + (1 - r_p) / (1 + r_p));
+}
+
 double illuminance_through_opening(Vec3d x, Vec3d n, Vec3d corner, Vec3d u, Vec3d v, const SeenLuminance& luminance) {
   const Vec3d normal = cross(u, v);
   const double area = length(normal);

@@ -58,6 +58,11 @@ double cie171_sky_horizontal_illuminance(int type, double sun_zenith, double sun
 // the fit dips below).
 double clear_glass_transmittance(double cos_incidence);
 
+// A thin clear pane of refractive index n at an angle of incidence of cosine c, in double: both
+// faces' Fresnel reflectances for each polarisation, the light bouncing between them, (1 - R) /
+// (1 + R) each, unpolarised the mean (Born and Wolf 1.5.3; no absorption).
+double thin_pane_transmittance(double cos_incidence, double ior);
+
 // Luminance (cd/m2) seen through the opening point `through` in the unit direction `direction`.
 using SeenLuminance = std::function<double(Vec3d through, Vec3d direction)>;
 
