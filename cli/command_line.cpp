@@ -241,10 +241,10 @@ daylight options (bake): a sky and a sun lighting the scene, besides its own lig
   --sun-rays N            shadow rays per texel to the sun's disc (default 32)
 
 analysis options (bake): illuminance where there is no surface, and images to read it from
-  --work-plane M          a grid of sensors M metres over the floors, facing up (0.8 for desks,
-                          0 for circulation): OUTDIR/sensors.csv and the heat map work_plane.png
-                          (seen from above, -Z up, +X right), min, mean, max and uniformity (min
-                          / mean) in report.json and on stderr
+  --work-plane            a grid of sensors over the floors, facing up: OUTDIR/sensors.csv and the
+                          heat map work_plane.png (seen from above, -Z up, +X right), min, mean,
+                          max and uniformity (min / mean) in report.json and on stderr
+  --work-plane-height M   its height over the floors (default 0.8, desks; 0 for circulation)
   --work-plane-spacing M  between the grid's points, along x and z (default 0.5)
   --work-plane-over NAMES the floors, by node name (comma-separated parts of names) (default:
                           under each point, the lowest surface facing up)
@@ -594,9 +594,8 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
        }},
       {"--sensors", [&](const std::string& v) { b.sensor_file = v; }},
       {"--sensor-rays", [&](const std::string& v) { b.bake.sensor.rays = uint32_t(parse_integer("--sensor-rays", v, 1, 1 << 24)); }},
-      {"--work-plane", [&](const std::string& v) {
-         b.bake.work_plane.enabled = true;
-         b.bake.work_plane.height = parse_number("--work-plane", v, 0, 1000);
+      {"--work-plane-height", [&](const std::string& v) {
+         b.bake.work_plane.height = parse_number("--work-plane-height", v, 0, 1000);
        }},
       {"--work-plane-spacing", [&](const std::string& v) { b.bake.work_plane.spacing = parse_number("--work-plane-spacing", v, 0.001, 1000); }},
       {"--work-plane-over", [&](const std::string& v) {
@@ -647,6 +646,7 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
       {"--no-near-field", [&] { b.bake.near_field = false; }},
       {"--simulate-everything", [&] { b.bake.plan.simulate_everything = true; }},
       {"--daylight-factor", [&] { b.daylight_factor = true; }},
+      {"--work-plane", [&] { b.bake.work_plane.enabled = true; }},
   };
   atlas_options(b.atlas, with_value, flags);
   load_options(b.load, with_value, flags);
@@ -718,7 +718,8 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
       {"emission-scale", number(b.bake.emission_scale)},
       {"sensors", b.sensor_file.empty() ? "none" : b.sensor_file},
       {"sensor-rays", number(b.bake.sensor.rays)},
-      {"work-plane", b.bake.work_plane.enabled ? number(b.bake.work_plane.height) : "none"},
+      {"work-plane", b.bake.work_plane.enabled ? "yes" : "no"},
+      {"work-plane-height", number(b.bake.work_plane.height)},
       {"work-plane-spacing", number(b.bake.work_plane.spacing)},
       {"daylight-factor", b.daylight_factor ? "yes" : "no"},
       {"false-colour", !b.analysis.false_colour_pages ? "none" : b.analysis.scale.logarithmic ? "log" : "linear"},

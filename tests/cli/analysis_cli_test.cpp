@@ -43,7 +43,7 @@ int png_width(const std::string& path) {
 TEST(AnalysisCli, AWorkPlaneUnderAnOvercastSkyGivesLuxDaylightFactorsAndTheirImages) {
   const std::string out = test::fresh_folder("analysis_cli_work_plane") + "/out";
   const test::Outcome r = test::radbake("bake " + fixture("open_floor.gltf") + " -o " + out +
-                                        " --sky cie-overcast --sky-illuminance 8000 --work-plane 0.8"
+                                        " --sky cie-overcast --sky-illuminance 8000 --work-plane"
                                         " --work-plane-spacing 1 --daylight-factor --false-colour log");
   ASSERT_EQ(r.status, 0) << r.err;
   // The open 4 m floor: a 4 x 4 grid, each point facing the whole sky and nothing else (the floor
@@ -136,11 +136,13 @@ INSTANTIATE_TEST_SUITE_P(
         Refused{"csv_with_a_zero_normal", "--sky uniform", "1,2,3,0,0,0\n", "line 1: the sensor's normal is zero"},
         Refused{"csv_empty", "--sky uniform", "# nothing\n", "holds no sensor"},
         Refused{"csv_missing", "--sky uniform --sensors /nonexistent/sensors.csv", "", "cannot read the sensor file"},
-        Refused{"work_plane_too_fine", "--quiet --sky uniform --work-plane 0.8 --work-plane-spacing 0.001", "",
+        Refused{"work_plane_too_fine", "--quiet --sky uniform --work-plane --work-plane-spacing 0.001", "",
                 "raise --work-plane-spacing"},
-        Refused{"work_plane_over_nothing", "--quiet --sky uniform --work-plane 0.8 --work-plane-over desk", "",
+        Refused{"work_plane_over_nothing", "--quiet --sky uniform --work-plane --work-plane-over desk", "",
                 "no surface is named like the work plane's floors"},
-        Refused{"false_colour_unknown", "--sky uniform --false-colour rainbow", "", "--false-colour must be linear or log"}),
+        Refused{"false_colour_unknown", "--sky uniform --false-colour rainbow", "", "--false-colour must be linear or log"},
+        Refused{"work_plane_height_negative", "--sky uniform --work-plane --work-plane-height -1", "",
+                "--work-plane-height must be between 0 and 1000"}),
     [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace
@@ -153,7 +155,7 @@ namespace {
 std::vector<std::vector<double>> classroom_readings(const std::string& case_name, const std::string& sky) {
   const std::string out = test::fresh_folder("analysis_cli_classroom_" + case_name) + "/out";
   const test::Outcome r = test::radbake("bake " + test::source_path("samples/classroom/classroom.gltf") + " -o " + out +
-                                        " --quiet --work-plane 0.8 --work-plane-over floor " + sky);
+                                        " --quiet --work-plane --work-plane-over floor " + sky);
   EXPECT_EQ(r.status, 0) << r.err;
   return r.status == 0 ? csv_rows(out + "/sensors.csv") : std::vector<std::vector<double>>{};
 }
