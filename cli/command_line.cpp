@@ -81,6 +81,7 @@ const char* usage_text() {
        radbake uv SCENE.gltf|SCENE.glb --stats [--json] [lightmap UV options]
        radbake diff A B [--json] [--max-rmse PCT] [--max-p50|p95|p99 PCT] [--max-error X]
                     [--diff-images DIR]
+       radbake view OUTDIR [OUTDIR_B] [--port N] [--no-open]
        radbake --help | --version
 
 Bakes diffuse global illumination (radiosity with colour bleeding) into lightmaps.
@@ -261,6 +262,11 @@ analysis options (bake): illuminance where there is no surface, and images to re
   --false-colour-max X|auto
                           the value at the top of the false-colour scales (default auto: the 99th
                           percentile, rounded up to 1, 2, 2.5 or 5 x 10^k)
+
+view options: a page on 127.0.0.1 showing OUTDIR's bake in three.js (and OUTDIR_B's beside it);
+it serves the page, three.js and the two folders' files, nothing else
+  --port N                the port (default: a free one; the address is printed)
+  --no-open               do not open the page in the browser
 
 diff options:
   --json                  machine-readable statistics on stdout
@@ -521,6 +527,24 @@ void parse_diff(const std::vector<std::string>& args, CommandLine& cl) {
   if (d.candidate.empty()) throw UsageError("missing bakes to compare (radbake diff A B)");
 }
 
+void parse_view(const std::vector<std::string>& args, CommandLine& cl) {
+  ViewCommand& v = cl.view;
+  std::map<std::string, Setter> with_value = {
+      {"--port", [&](const std::string& text) { v.port = int(parse_integer("--port", text, 1, 65535)); }},
+  };
+  std::map<std::string, Flag> flags = {{"--no-open", [&] { v.open = false; }}};
+  bool help = false;
+  parse_options(args, with_value, flags, [&](const std::string& arg) {
+    if (v.folders.size() == 2) throw UsageError("unexpected argument '" + clipped(arg) + "' (radbake view shows one bake, or two to compare)");
+    v.folders.push_back(arg);
+  }, help);
+  if (help) {
+    cl.action = Action::Help;
+    return;
+  }
+  if (v.folders.empty()) throw UsageError("missing output folder (radbake view OUTDIR [OUTDIR_B])");
+}
+
 }  // namespace
 
 CommandLine parse_command_line(const std::vector<std::string>& args) {
@@ -539,6 +563,11 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
   if (args[0] == "diff") {
     cl.action = Action::Diff;
     parse_diff(args, cl);
+    return cl;
+  }
+  if (args[0] == "view") {
+    cl.action = Action::View;
+    parse_view(args, cl);
     return cl;
   }
   if (args[0] != "bake") throw UsageError("unknown command '" + clipped(args[0]) + "' (try radbake --help)");

@@ -10,6 +10,7 @@
 #include "baker/daylight.h"
 #include "baker/exposure.h"
 #include "baker/lightmap_difference.h"
+#include "cli/view_command.h"
 #include "io/analysis_outputs.h"
 #include "io/gltf.h"
 #include "uv/atlas.h"
@@ -65,13 +66,14 @@ struct DiffCommand {
   bool json = false;         // machine-readable statistics
 };
 
-enum class Action { Bake, Uv, Diff, Help, Version };
+enum class Action { Bake, Uv, Diff, View, Help, Version };
 
 struct CommandLine {
   Action action = Action::Help;
   BakeCommand bake;
   UvCommand uv;
   DiffCommand diff;
+  ViewCommand view;
 };
 
 // Throws UsageError naming the offending argument.

@@ -303,6 +303,7 @@ int main(int argc, char** argv) {
       case Action::Bake: return run_bake(cl.bake);
       case Action::Uv: return run_uv(cl.uv);
       case Action::Diff: return run_diff(cl.diff);
+      case Action::View: return run_view(cl.view);
     }
   } catch (const UsageError& e) {
     print_error(e);

@@ -1,0 +1,142 @@
+#include "cli/view_command.h"
+
+#include <httplib.h>
+#include <spawn.h>
+#include <sys/wait.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <thread>
+
+#include "baker/errors.h"
+#include "cli/interrupts.h"
+#include "cli/served_files.h"
+
+extern char** environ;
+
+namespace radbake {
+namespace {
+
+namespace fs = std::filesystem;
+
+const char* content_type(const fs::path& file) {
+  const std::string ext = file.extension().string();
+  if (ext == ".html") return "text/html; charset=utf-8";
+  if (ext == ".js" || ext == ".mjs") return "text/javascript; charset=utf-8";
+  if (ext == ".json") return "application/json";
+  if (ext == ".gltf") return "model/gltf+json";
+  if (ext == ".glb") return "model/gltf-binary";
+  if (ext == ".png") return "image/png";
+  if (ext == ".csv") return "text/csv";
+  if (ext == ".css") return "text/css";
+  return "application/octet-stream";  // .bin, .exr
+}
+
+std::string slurp(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream out;
+  out << in.rdbuf();
+  return out.str();
+}
+
+// A route that serves what served_file allows under `root`, the rest of the path being the file.
+void serve_folder(httplib::Server& server, const std::string& prefix, const fs::path& root) {
+  server.Get(prefix + "(.*)", [root](const httplib::Request& request, httplib::Response& response) {
+    const ServedFile file = served_file(root, request.matches[1].str());
+    if (file.refusal != Refusal::None) {
+      response.status = file.refusal == Refusal::Forbidden ? 403 : 404;
+      response.set_content(file.refusal == Refusal::Forbidden ? "forbidden\n" : "not found\n", "text/plain");
+      return;
+    }
+    response.set_content(slurp(file.path), content_type(file.path));
+  });
+}
+
+// What the page needs to know of each bake: its name and its report.json.
+nlohmann::json bakes_json(const std::vector<fs::path>& folders) {
+  nlohmann::json out = nlohmann::json::array();
+  for (size_t k = 0; k < folders.size(); ++k) {
+    nlohmann::json report = nlohmann::json::parse(slurp(folders[k] / "report.json"), nullptr, false);
+    std::string name;
+    for (const auto& f : report.value("files", nlohmann::json::array()))
+      if (f.is_string() && f.get<std::string>().size() > 5 &&
+          f.get<std::string>().compare(f.get<std::string>().size() - 5, 5, ".gltf") == 0)
+        name = f.get<std::string>();
+    out.push_back({{"url", k == 0 ? "/a/" : "/b/"}, {"folder", folders[k].filename().string()}, {"gltf", name},
+                   {"report", report}});
+  }
+  return out;
+}
+
+void open_in_browser(const std::string& url) {
+  pid_t pid = 0;
+  const char* argv[] = {"xdg-open", url.c_str(), nullptr};
+  if (posix_spawnp(&pid, "xdg-open", nullptr, nullptr, const_cast<char* const*>(argv), environ) != 0) {
+    std::fprintf(stderr, "radbake: could not start xdg-open: open %s yourself\n", url.c_str());
+    return;
+  }
+  std::thread([pid] { waitpid(pid, nullptr, 0); }).detach();
+}
+
+}  // namespace
+
+int run_view(const ViewCommand& command) {
+  std::vector<fs::path> folders;
+  for (const std::string& folder : command.folders) {
+    std::error_code error;
+    if (!fs::is_regular_file(fs::path(folder) / "report.json", error))
+      throw InputError("'" + clipped(folder) + "' is not a radbake output folder (it has no report.json)");
+    folders.push_back(fs::canonical(folder));
+  }
+  const fs::path web = RADBAKE_WEB_DIR;
+  if (!fs::is_regular_file(web / "node_modules" / "three" / "build" / "three.module.js"))
+    throw InputError("three.js is not installed in " + web.string() + "/node_modules: run ./dev test (npm ci in web/)");
+
+  httplib::Server server;
+  server.Get("/favicon.ico", [](const httplib::Request&, httplib::Response& response) { response.status = 204; });
+  server.Get("/", [&](const httplib::Request&, httplib::Response& response) {
+    response.set_content(slurp(web / "viewer" / "index.html"), "text/html; charset=utf-8");
+  });
+  const nlohmann::json bakes = bakes_json(folders);
+  server.Get("/api/bakes", [&](const httplib::Request&, httplib::Response& response) {
+    response.set_content(bakes.dump(), "application/json");
+  });
+  serve_folder(server, "/viewer/", web / "viewer");
+  server.Get("/radbake-lightmap.js", [&](const httplib::Request&, httplib::Response& response) {
+    response.set_content(slurp(web / "radbake-lightmap.js"), "text/javascript; charset=utf-8");
+  });
+  serve_folder(server, "/three/", web / "node_modules" / "three");
+  serve_folder(server, "/a/", folders[0]);
+  if (folders.size() > 1) serve_folder(server, "/b/", folders[1]);
+
+  // Only this machine: the page reads the folders' files, which are nobody else's business.
+  const char* host = "127.0.0.1";
+  int port = command.port;
+  if (port > 0) {
+    if (!server.bind_to_port(host, port)) throw InputError("cannot listen on 127.0.0.1:" + std::to_string(port) + " (in use?)");
+  } else {
+    port = server.bind_to_any_port(host);
+    if (port <= 0) throw InputError("cannot listen on 127.0.0.1");
+  }
+  const std::string url = "http://127.0.0.1:" + std::to_string(port) + "/";
+  std::printf("radbake: viewing at %s (Ctrl-C stops)\n", url.c_str());
+  std::fflush(stdout);
+  if (command.open) open_in_browser(url);
+
+  std::atomic<bool> done{false};
+  std::thread watcher([&] {
+    while (!done && !interrupted()) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    server.stop();
+  });
+  server.listen_after_bind();
+  done = true;
+  watcher.join();
+  return interrupted() ? interrupted_exit_status() : 0;
+}
+
+}  // namespace radbake
