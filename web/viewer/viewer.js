@@ -1,18 +1,197 @@
-// radbake view's page: the bake's engine file in three.js with its baked light (the MOZ_lightmap
-// plugin), the glTF's cameras as bookmarks, and the illuminance where you click, read from the
-// EXR page (the PNG holds 8 bits of it; the EXR the bake's own half floats).
+// radbake view's page: one bake (or two to compare) in three.js. Display modes: the baked light as
+// an engine shows it (the MOZ_lightmap plugin), the lightmap alone, the vertex light, false colour
+// of the illuminance (and of the daylight factor when the bake has one), and the difference of two
+// bakes as `radbake diff` draws it. The value where you click is read from the EXR page (the PNG
+// holds 8 bits of it; the EXR the bake's own half floats).
 import * as THREE from 'three';
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
 import { EXRLoader } from 'three/addons/loaders/EXRLoader.js';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { RadbakeLightmapPlugin } from '/radbake-lightmap.js';
+import { drawLegend, niceNumberAtOrAbove, turboGlsl } from '/viewer/legend.js';
 
-const canvas = document.getElementById('view');
+const $ = (id) => document.getElementById(id);
+const canvas = $('view');
 const renderer = new THREE.WebGLRenderer({ canvas, antialias: true, preserveDrawingBuffer: true });
 renderer.setPixelRatio(1);
-const scene = new THREE.Scene();
+renderer.toneMapping = THREE.LinearToneMapping;  // exposure in EV: a plain multiplier, 1 at 0 EV
 const camera = new THREE.PerspectiveCamera(50, 1, 0.01, 1000);
 const controls = new OrbitControls(camera, canvas);
+
+// One loaded bake: its glTF, its JSON, its EXR pages as float textures, and per display mode the
+// material each of its meshes wears.
+async function loadBake(bake, exposure) {
+  const loader = new GLTFLoader();
+  loader.register((parser) => new RadbakeLightmapPlugin(parser, exposure ? { exposure } : {}));
+  const gltf = await loader.loadAsync(bake.url + bake.gltf);
+  const json = gltf.parser.json;
+  const record = json.extras.radbake;
+  const pages = await Promise.all(record.pages.map((p) => new EXRLoader().setDataType(THREE.FloatType).loadAsync(bake.url + p.exr)));
+  for (const page of pages) {
+    page.minFilter = page.magFilter = THREE.NearestFilter;
+    page.generateMipmaps = false;
+  }
+  const scene = new THREE.Scene();
+  scene.add(gltf.scene);
+  const meshes = [];
+  gltf.scene.traverse((o) => {
+    if (o.isMesh) meshes.push({ mesh: o, baked: o.material, page: pageOf(gltf, json, o.material) });
+  });
+  return { bake, gltf, json, record, pages, scene, meshes };
+}
+
+// The page a material's light map is on: MOZ_lightmap's texture, as extras.radbake.pages lists it.
+function pageOf(gltf, json, material) {
+  const association = gltf.parser.associations.get(material);
+  const lightmap = association && json.materials[association.materials]?.extensions?.MOZ_lightmap;
+  if (!lightmap) return -1;
+  return json.extras.radbake.pages.findIndex((p) => p.texture === lightmap.index);
+}
+
+// The EXR pages' values (mean of R, G, B) at a texel, rows top first (EXRLoader puts the file's
+// last row first: a texture's origin is bottom-left).
+function texelValue(page, x, y) {
+  const { width, height, data } = page.image;
+  const channels = data.length / (width * height);
+  const i = ((height - 1 - y) * width + x) * channels;
+  return (data[i] + data[i + 1] + data[i + 2]) / 3;
+}
+
+// The automatic top of a false-colour scale: the 99th percentile of the covered texels, rounded up
+// to 1, 2, 2.5 or 5 x 10^k, as radbake's own false-colour images choose it.
+function automaticMax(pages, factor) {
+  const values = [];
+  for (const page of pages) {
+    const { width, height } = page.image;
+    for (let y = 0; y < height; y += 2) for (let x = 0; x < width; x += 2) {
+      const v = texelValue(page, x, y) * factor;
+      if (v > 0) values.push(v);
+    }
+  }
+  if (!values.length) return 1;
+  values.sort((a, b) => a - b);
+  return niceNumberAtOrAbove(values[Math.min(values.length - 1, Math.ceil(0.99 * values.length) - 1)]);
+}
+
+const MODES = { baked: -1, lightmap: 0, falsecolour: 1, difference: 2, vertex: 3 };
+
+const vertexShader = `
+  attribute vec2 uv1;
+  varying vec2 vUv1;
+  #ifdef VERTEX_LIGHT
+  attribute vec3 _baked_light;
+  varying vec3 vLight;
+  #endif
+  void main() {
+    vUv1 = uv1;
+    #ifdef VERTEX_LIGHT
+    vLight = _baked_light;
+    #endif
+    gl_Position = projectionMatrix * modelViewMatrix * vec4(position, 1.0);
+  }`;
+
+const fragmentShader = `
+  uniform sampler2D pageA, pageB;
+  uniform int mode;
+  uniform float displayScale;  // display value per lux on a white Lambertian surface
+  uniform float valueScale;    // what the false colour shows per lux (1, or 100 / E_hz for a daylight factor)
+  uniform float maxValue, decades, logarithmic;
+  uniform float floorValue, differenceScale;
+  varying vec2 vUv1;
+  #ifdef VERTEX_LIGHT
+  varying vec3 vLight;
+  #endif
+  ${turboGlsl}
+  vec3 srgbToLinear(vec3 c) { return mix(c / 12.92, pow((c + 0.055) / 1.055, vec3(2.4)), step(0.04045, c)); }
+  void main() {
+    vec2 t = vec2(vUv1.x, 1.0 - vUv1.y);
+    float a = dot(texture2D(pageA, t).rgb, vec3(1.0 / 3.0));
+    vec3 c;
+    if (mode == 0) {
+      c = vec3(a * displayScale);
+    } else if (mode == 1) {
+      float v = a * valueScale;
+      float f = logarithmic > 0.5 ? (log(max(v, 1e-30) / maxValue) / log(10.0) + decades) / decades : v / maxValue;
+      c = srgbToLinear(turbo(clamp(f, 0.0, 1.0)));
+    } else if (mode == 2) {
+      float b = dot(texture2D(pageB, t).rgb, vec3(1.0 / 3.0));
+      float s = clamp((b - a) / max(a, floorValue) / differenceScale, -1.0, 1.0);
+      c = s > 0.0 ? mix(vec3(1.0), vec3(1.0, 0.0, 0.0), s) : mix(vec3(1.0), vec3(0.0, 0.0, 1.0), -s);
+    } else {
+      #ifdef VERTEX_LIGHT
+      c = vLight * displayScale;
+      #endif
+    }
+    gl_FragColor = vec4(c, 1.0);
+    #include <colorspace_fragment>
+  }`;
+
+// The material a mesh wears in a mode that reads pages or vertex light.
+function analysisMaterial(uniforms, pageA, pageB, vertexLight) {
+  return new THREE.ShaderMaterial({
+    vertexShader, fragmentShader, toneMapped: false, side: THREE.FrontSide,
+    defines: vertexLight ? { VERTEX_LIGHT: 1 } : {},
+    uniforms: { ...uniforms, pageA: { value: pageA }, pageB: { value: pageB ?? pageA } },
+  });
+}
+
+const state = { bakes: [], a: null, b: null, mode: 'baked', split: 0.5, walk: false, uniforms: null, scale: null };
+
+function setupMaterials() {
+  const { a, b } = state;
+  const u = state.uniforms = {
+    mode: { value: 0 }, displayScale: { value: 1 }, valueScale: { value: 1 }, maxValue: { value: 1 },
+    decades: { value: 3 }, logarithmic: { value: 0 }, floorValue: { value: 0 }, differenceScale: { value: 0.1 },
+  };
+  for (const bake of [a, b]) {
+    if (!bake) continue;
+    for (const m of bake.meshes) {
+      const page = bake.pages[m.page];
+      const other = bake === a && b && b.pages.length === a.pages.length ? b.pages[m.page] : null;
+      m.analysis = m.page >= 0 ? analysisMaterial(u, page, other, false) : null;
+      m.vertex = m.mesh.geometry.attributes._baked_light ? analysisMaterial(u, page, null, true) : null;
+    }
+  }
+  // radbake diff's floor: 10% of the reference's mean texel value.
+  let sum = 0, n = 0;
+  for (const page of a.pages) for (let i = 0; i < page.image.data.length; i += 4) {
+    const v = (page.image.data[i] + page.image.data[i + 1] + page.image.data[i + 2]) / 3;
+    if (v > 0) sum += v, n++;
+  }
+  u.floorValue.value = n ? 0.1 * sum / n : 0;
+}
+
+// What the false colour shows: lux, or the daylight factor where the bake has one.
+function daylightReference() {
+  const d = state.a.bake.report.daylight;
+  return d && state.a.bake.report.options?.['daylight-factor'] === 'yes' ? d.sky_horizontal_illuminance_lx : 0;
+}
+
+function applyMode() {
+  const mode = state.mode, u = state.uniforms;
+  const daylight = mode === 'daylight';
+  u.mode.value = mode === 'daylight' ? MODES.falsecolour : MODES[mode] ?? 0;
+  const exposure = (state.a.record.display_exposure || 1) * Math.pow(2, Number($('ev').value));
+  renderer.toneMappingExposure = Math.pow(2, Number($('ev').value));
+  u.displayScale.value = exposure / Math.PI;
+  u.valueScale.value = daylight ? 100 / daylightReference() : 1;
+  u.logarithmic.value = $('scale').value === 'log' ? 1 : 0;
+  const typed = Number($('max').value);
+  u.maxValue.value = typed > 0 ? typed : automaticMax(state.a.pages, u.valueScale.value);
+  for (const bake of [state.a, state.b]) {
+    if (!bake) continue;
+    for (const m of bake.meshes) {
+      m.mesh.material = mode === 'baked' ? m.baked : mode === 'vertex' ? m.vertex ?? m.baked : m.analysis ?? m.baked;
+    }
+  }
+  const legend = $('legend');
+  const unit = daylight ? '%' : state.a.record.unit;
+  if (mode === 'falsecolour' || mode === 'daylight')
+    drawLegend(legend, { kind: 'turbo', max: u.maxValue.value, logarithmic: u.logarithmic.value > 0.5, decades: 3, unit });
+  else if (mode === 'difference') drawLegend(legend, { kind: 'difference', scale: u.differenceScale.value });
+  legend.style.display = ['falsecolour', 'daylight', 'difference'].includes(mode) ? 'block' : 'none';
+  state.scale = { max: u.maxValue.value, logarithmic: u.logarithmic.value > 0.5, decades: 3, unit };
+}
 
 function resize() {
   const w = canvas.clientWidth, h = canvas.clientHeight;
@@ -34,105 +213,154 @@ function frame(root) {
   controls.update();
 }
 
-// A glTF camera as the view: its world position and direction; orbiting continues around a point
-// straight ahead of it.
+// A glTF camera as the view; orbiting continues around a point straight ahead of it.
 function useCamera(gltfCamera) {
   gltfCamera.updateWorldMatrix(true, false);
   camera.position.setFromMatrixPosition(gltfCamera.matrixWorld);
   camera.quaternion.setFromRotationMatrix(gltfCamera.matrixWorld);
   if (gltfCamera.isPerspectiveCamera) camera.fov = gltfCamera.fov;
   camera.updateProjectionMatrix();
-  const ahead = new THREE.Vector3(0, 0, -1).applyQuaternion(camera.quaternion);
-  controls.target.copy(camera.position).add(ahead);
+  controls.target.copy(camera.position).add(new THREE.Vector3(0, 0, -1).applyQuaternion(camera.quaternion));
   controls.update();
 }
 
-// EXR pages, loaded when first read: rows top first, RGBA floats.
-const pages = new Map();
-async function exrPage(url) {
-  if (!pages.has(url)) {
-    pages.set(url, new EXRLoader().setDataType(THREE.FloatType).loadAsync(url).then((texture) => {
-      const { width, height, data } = texture.image;
-      const channels = data.length / (width * height);
-      // EXRLoader puts the file's last row first (a texture's origin is bottom-left).
-      return { width, height, at: (x, y) => {
-        const i = ((height - 1 - y) * width + x) * channels;
-        return [data[i], data[i + 1], data[i + 2]];
-      } };
-    }));
-  }
-  return pages.get(url);
-}
-
-const state = { bakes: [], gltf: null, json: null, ready: null };
-
-// The page a material's light map is on: MOZ_lightmap's texture, as extras.radbake.pages lists it.
-function pageOf(material) {
-  const association = state.gltf.parser.associations.get(material);
-  if (!association || association.materials === undefined) return -1;
-  const lightmap = state.json.materials[association.materials].extensions?.MOZ_lightmap;
-  if (!lightmap) return -1;
-  return state.json.extras.radbake.pages.findIndex((p) => p.texture === lightmap.index);
+// First-person walk: W, A, S, D move along the ground plane, dragging turns the head.
+const keys = new Set();
+window.addEventListener('keydown', (e) => keys.add(e.key.toLowerCase()));
+window.addEventListener('keyup', (e) => keys.delete(e.key.toLowerCase()));
+canvas.addEventListener('pointermove', (e) => {
+  if (!state.walk || !(e.buttons & 1)) return;
+  const euler = new THREE.Euler().setFromQuaternion(camera.quaternion, 'YXZ');
+  euler.y -= e.movementX * 0.004;
+  euler.x = Math.max(-1.5, Math.min(1.5, euler.x - e.movementY * 0.004));
+  camera.quaternion.setFromEuler(euler);
+});
+function walk(seconds) {
+  const size = new THREE.Box3().setFromObject(state.a.scene).getSize(new THREE.Vector3()).length();
+  const ahead = new THREE.Vector3(0, 0, -1).applyQuaternion(camera.quaternion).setY(0).normalize();
+  const right = new THREE.Vector3().crossVectors(ahead, new THREE.Vector3(0, 1, 0));
+  const step = new THREE.Vector3();
+  if (keys.has('w')) step.add(ahead);
+  if (keys.has('s')) step.sub(ahead);
+  if (keys.has('d')) step.add(right);
+  if (keys.has('a')) step.sub(right);
+  if (step.lengthSq() > 0) camera.position.addScaledVector(step.normalize(), size * 0.15 * seconds);
 }
 
 const raycaster = new THREE.Raycaster();
 
-// What the bake holds at a pixel of the view (x right, y down): the surface, the page, the texel
-// and the value in the bake's unit (lux for irradiance), the mean of R, G, B. Null where no baked
-// surface is.
-async function pick(x, y) {
+// What bake A holds at a point of the view (x right, y down, in CSS pixels: pixel (i, j) has its
+// centre at i + 0.5, j + 0.5): the surface, the page, the texel and the value in the bake's unit
+// (lux for irradiance), the mean of R, G, B. Null where no baked surface is.
+function pick(x, y) {
   const ndc = new THREE.Vector2((x / canvas.clientWidth) * 2 - 1, -(y / canvas.clientHeight) * 2 + 1);
   raycaster.setFromCamera(ndc, camera);
-  const hit = raycaster.intersectObject(scene, true).find((h) => h.uv1);
-  if (!hit) return null;
-  const page = pageOf(hit.object.material);
-  if (page < 0) return null;
-  const record = state.json.extras.radbake;
-  const exr = await exrPage(state.bakes[0].url + record.pages[page].exr);
-  const tx = Math.min(exr.width - 1, Math.max(0, Math.floor(hit.uv1.x * exr.width)));
-  const ty = Math.min(exr.height - 1, Math.max(0, Math.floor(hit.uv1.y * exr.height)));
-  const rgb = exr.at(tx, ty);
-  return { surface: hit.object.name, page, texel: [tx, ty], value: (rgb[0] + rgb[1] + rgb[2]) / 3, unit: record.unit };
+  const hit = raycaster.intersectObject(state.a.scene, true).find((h) => h.uv1);
+  const entry = hit && state.a.meshes.find((m) => m.mesh === hit.object);
+  if (!entry || entry.page < 0) return null;
+  const page = state.a.pages[entry.page];
+  const { width, height } = page.image;
+  const tx = Math.min(width - 1, Math.max(0, Math.floor(hit.uv1.x * width)));
+  const ty = Math.min(height - 1, Math.max(0, Math.floor(hit.uv1.y * height)));
+  return { surface: hit.object.name, page: entry.page, texel: [tx, ty], value: texelValue(page, tx, ty), unit: state.a.record.unit };
 }
 
-canvas.addEventListener('click', async (event) => {
-  const r = await pick(event.offsetX, event.offsetY);
-  document.getElementById('readout').textContent = r
+canvas.addEventListener('click', (event) => {
+  if (state.walk) return;
+  const r = pick(event.offsetX, event.offsetY);
+  $('readout').textContent = r
     ? `${r.surface}\n${r.value.toPrecision(4)} ${r.unit}\npage ${r.page}, texel ${r.texel[0]}, ${r.texel[1]}`
     : 'no baked surface there';
 });
 
-function loop() {
-  controls.update();
-  renderer.render(scene, camera);
+function render() {
+  const w = canvas.clientWidth, h = canvas.clientHeight;
+  // The difference is a comparison of its own, drawn on A.
+  if (state.b && $('compare').value === 'split' && state.mode !== 'difference') {
+    const cut = Math.round(w * state.split);
+    renderer.setScissorTest(true);
+    renderer.setScissor(0, 0, cut, h);
+    renderer.render(state.a.scene, camera);
+    renderer.setScissor(cut, 0, w - cut, h);
+    renderer.render(state.b.scene, camera);
+    renderer.setScissorTest(false);
+  } else {
+    renderer.render(state.a.scene, camera);
+  }
+}
+
+let last = performance.now();
+function loop(now) {
+  if (state.walk) walk(Math.min(0.1, (now - last) / 1000));
+  else controls.update();
+  last = now;
+  render();
   requestAnimationFrame(loop);
 }
 
 async function start() {
+  const started = performance.now();
   state.bakes = await (await fetch('/api/bakes')).json();
-  const a = state.bakes[0];
-  document.getElementById('title').textContent = `radbake view: ${a.folder}`;
-  const loader = new GLTFLoader();
-  loader.register((parser) => new RadbakeLightmapPlugin(parser));
-  state.gltf = await loader.loadAsync(a.url + a.gltf);
-  state.json = state.gltf.parser.json;
-  scene.add(state.gltf.scene);
+  // B is shown at A's exposure: each bake's own would make a brighter design look the same.
+  state.a = await loadBake(state.bakes[0]);
+  if (state.bakes[1]) state.b = await loadBake(state.bakes[1], state.a.record.display_exposure);
+  $('title').textContent = `radbake view: ${state.bakes.map((b) => b.folder).join(' | ')}`;
+  setupMaterials();
   resize();
-  frame(state.gltf.scene);
-  const select = document.getElementById('camera');
-  state.gltf.cameras.forEach((c, k) => select.add(new Option(c.name || `camera ${k}`, String(k))));
-  select.addEventListener('change', () => {
-    const k = Number(select.value);
-    if (k < 0) frame(state.gltf.scene);
-    else useCamera(state.gltf.cameras[k]);
+  frame(state.a.scene);
+  const cameras = $('camera');
+  state.a.gltf.cameras.forEach((c, k) => cameras.add(new Option(c.name || `camera ${k}`, String(k))));
+  cameras.addEventListener('change', () => {
+    const k = Number(cameras.value);
+    if (k < 0) frame(state.a.scene);
+    else useCamera(state.a.gltf.cameras[k]);
   });
-  loop();
+  const modes = $('mode');
+  if (daylightReference() > 0) modes.add(new Option('daylight factor', 'daylight'));
+  if (state.b) {
+    modes.add(new Option('difference B − A', 'difference'));
+    $('compare-row').style.display = 'block';
+  }
+  for (const id of ['mode', 'scale', 'max', 'ev']) $(id).addEventListener('input', () => { state.mode = modes.value; applyMode(); });
+  $('split').addEventListener('input', () => { state.split = Number($('split').value); });
+  $('walk').addEventListener('change', () => { state.walk = $('walk').checked; controls.enabled = !state.walk; });
+  $('screenshot').addEventListener('click', () => {
+    const link = document.createElement('a');
+    link.download = 'radbake_view.png';
+    link.href = canvas.toDataURL('image/png');
+    link.click();
+  });
+  applyMode();
+  state.loadSeconds = (performance.now() - started) / 1000;
+  requestAnimationFrame(loop);
 }
 
-// For tests and scripts: wait for `ready`, choose a camera, read a pixel.
-state.ready = start();
+// For tests and scripts.
+const ready = start();
 window.radbakeView = {
-  ready: state.ready,
-  useCamera: (k) => { useCamera(state.gltf.cameras[k]); renderer.render(scene, camera); },
+  ready,
+  loadSeconds: () => state.loadSeconds,
+  useCamera: (k) => {  // the glTF's camera k, or the whole scene framed when it has none
+    if (state.a.gltf.cameras[k]) useCamera(state.a.gltf.cameras[k]);
+    else frame(state.a.scene);
+    render();
+  },
+  setMode: (mode, options = {}) => {
+    $('mode').value = mode;
+    state.mode = mode;
+    if (options.scale) $('scale').value = options.scale;
+    if (options.max !== undefined) $('max').value = String(options.max);
+    if (options.compare) $('compare').value = options.compare;
+    if (options.split !== undefined) state.split = options.split;
+    applyMode();
+    render();
+    return state.scale;
+  },
+  pixel: (x, y) => {
+    const gl = renderer.getContext();
+    const out = new Uint8Array(4);
+    gl.readPixels(x, canvas.height - 1 - y, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, out);
+    return Array.from(out.slice(0, 3));
+  },
   pick,
 };

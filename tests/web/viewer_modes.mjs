@@ -1,0 +1,42 @@
+// Drives `radbake view`'s page in headless Chromium for tests/cli/view_test.cpp and ./dev
+// view-screenshots: opens URL at WIDTH x HEIGHT through the glTF's first camera, then runs the
+// steps of a JSON list, each { mode, scale?, max?, compare?, split?, pixels: [[x, y], ...],
+// screenshot?: FILE }, and prints one JSON line: { consoleErrors, loadSeconds, steps: [{ scale,
+// pixels: [{ x, y, rgb, pick }] }] }.
+//   node viewer_modes.mjs URL WIDTH HEIGHT 'STEPS'
+import path from 'node:path';
+import { pathToFileURL } from 'node:url';
+import { CHROMIUM_ARGS, CHROMIUM_PATH } from '../../web/render/render.mjs';
+import { WEB_DIR } from './support.mjs';
+
+// playwright-core is web/'s package (web/package-lock.json), not this folder's.
+const { chromium } = await import(pathToFileURL(path.join(WEB_DIR, 'node_modules', 'playwright-core', 'index.mjs')).href);
+
+const [url, width, height, stepsJson] = process.argv.slice(2);
+const browser = await chromium.launch({ executablePath: CHROMIUM_PATH, args: CHROMIUM_ARGS, headless: true });
+try {
+  const page = await browser.newPage({ viewport: { width: Number(width), height: Number(height) }, deviceScaleFactor: 1 });
+  const consoleErrors = [];
+  page.on('console', (msg) => { if (msg.type() === 'error') consoleErrors.push(msg.text()); });
+  page.on('pageerror', (error) => consoleErrors.push(String(error)));
+  await page.goto(url);
+  await page.waitForFunction(() => window.radbakeView !== undefined);
+  await page.evaluate(() => window.radbakeView.ready);
+  await page.evaluate(() => window.radbakeView.useCamera(0));
+  const steps = [];
+  for (const step of JSON.parse(stepsJson)) {
+    const scale = await page.evaluate((s) => window.radbakeView.setMode(s.mode, s), step);
+    const pixels = [];
+    for (const [x, y] of step.pixels || []) {
+      const rgb = await page.evaluate(([px, py]) => window.radbakeView.pixel(px, py), [x, y]);
+      const pick = await page.evaluate(([px, py]) => window.radbakeView.pick(px + 0.5, py + 0.5), [x, y]);
+      pixels.push({ x, y, rgb, pick });
+    }
+    if (step.screenshot) await page.screenshot({ path: step.screenshot });
+    steps.push({ scale, pixels });
+  }
+  const loadSeconds = await page.evaluate(() => window.radbakeView.loadSeconds());
+  console.log(JSON.stringify({ consoleErrors, loadSeconds, steps }));
+} finally {
+  await browser.close();
+}
