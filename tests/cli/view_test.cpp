@@ -208,19 +208,24 @@ TEST(View, FalseColourPaintsEachTexelAsTheLegendSays) {
 }
 
 TEST(View, EveryDisplayModeDrawsTheBakeWithoutAnError) {
-  // The classroom under the CIE overcast sky, with a daylight factor: every mode it offers.
+  // The classroom under the CIE overcast sky, with a daylight factor and a work plane: every mode
+  // it offers.
   const std::string folder = test::fresh_folder("view_modes") + "/out";
   const test::Outcome bake = test::radbake("bake " + test::source_path("samples/classroom/classroom.gltf") + " -o " + folder +
-                                           " --quiet --sky cie-overcast --daylight-factor --max-page-size 256");
+                                           " --quiet --sky cie-overcast --daylight-factor --max-page-size 256 --work-plane "
+                                           "--work-plane-over floor --work-plane-spacing 1");
   ASSERT_EQ(bake.status, 0) << bake.err;
   ViewServer server({folder});
   ASSERT_GT(server.port(), 0);
   nlohmann::json steps = nlohmann::json::array();
   for (const char* mode : {"baked", "lightmap", "vertex", "falsecolour", "daylight"})
     steps.push_back({{"mode", mode}, {"pixels", {{128, 128}, {120, 136}}}});
+  // Three points of the grid's last row (9 x 7 points at 1 m), drawn last, so no other point
+  // covers them.
+  steps.push_back({{"mode", "sensors"}, {"max", 2000}, {"sensors", {54, 58, 62}}});
   const nlohmann::json result = drive_page(server, steps);
   ASSERT_FALSE(result.is_null());
-  for (size_t s = 0; s < steps.size(); ++s)
+  for (size_t s = 0; s + 1 < steps.size(); ++s)
     for (const nlohmann::json& p : result["steps"][s]["pixels"]) {
       // Something lit is drawn there, in every mode (the background is black).
       EXPECT_GT(int(p["rgb"][0]) + int(p["rgb"][1]) + int(p["rgb"][2]), 30) << steps[s]["mode"] << p.dump();
@@ -228,6 +233,42 @@ TEST(View, EveryDisplayModeDrawsTheBakeWithoutAnError) {
   // The daylight factor's scale is in percent, and its top a daylight factor, not lux.
   EXPECT_EQ(result["steps"][4]["scale"]["unit"], "%");
   EXPECT_LE(double(result["steps"][4]["scale"]["max"]), 100);
+  // The work plane's points, each drawn in the colour of its reading on the legend's scale (3 of
+  // 255: sRGB to linear and back).
+  FalseColourScale scale;
+  scale.max = 2000;
+  for (const nlohmann::json& s : result["steps"][5]["sensors"]) {
+    const auto expected = turbo_colour(scale_fraction(double(s["lux"]), scale, 2000));
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(int(s["rgb"][c]), int(expected[size_t(c)]), 3) << s.dump();
+  }
+}
+
+TEST(View, ExposureWalkingAndTheScreenshotButtonDoWhatTheySay) {
+  const std::string folder = cornell_bake("view_controls");
+  ViewServer server({folder});
+  ASSERT_GT(server.port(), 0);
+  const nlohmann::json result = drive_page(server, nlohmann::json::array({
+      {{"mode", "lightmap"}, {"ev", 0}, {"pixels", {{128, 62}}}},
+      {{"mode", "lightmap"}, {"ev", -1}, {"pixels", {{128, 62}}}},
+      {{"mode", "baked"}, {"ev", 0}, {"walk", true}, {"hold", "w"}, {"button", true}},
+  }));
+  ASSERT_FALSE(result.is_null());
+  // One EV less halves the display value: the back wall's linear value, from its sRGB pixel.
+  auto linear = [](int srgb) {
+    const double c = srgb / 255.0;
+    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+  };
+  const int at_0 = result["steps"][0]["pixels"][0]["rgb"][1], at_minus_1 = result["steps"][1]["pixels"][0]["rgb"][1];
+  ASSERT_GT(at_0, 40);
+  ASSERT_LT(at_0, 255);  // not clipped
+  // 2/255 in sRGB bounds the rounding of both pixels.
+  EXPECT_NEAR(linear(at_minus_1) / linear(at_0), 0.5, 0.03) << at_0 << " " << at_minus_1;
+  // Walking forward (W) from the sample's camera, which looks along +z: it moved that way.
+  const nlohmann::json &before = result["steps"][1]["camera"], &after = result["steps"][2]["camera"];
+  EXPECT_GT(double(after[2]) - double(before[2]), 0.01) << before << " " << after;
+  EXPECT_NEAR(double(after[1]), double(before[1]), 1e-6);  // along the ground
+  // The screenshot button saves a PNG of the view.
+  EXPECT_GT(int(result["steps"][2]["download"]), 1000);
 }
 
 TEST(View, ComparingABakeWithAFivePercentBrighterLampShowsTheDifference) {

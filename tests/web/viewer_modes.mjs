@@ -1,9 +1,12 @@
 // Drives `radbake view`'s page in headless Chromium for tests/cli/view_test.cpp and ./dev
 // view-screenshots: opens URL at WIDTH x HEIGHT through the glTF's first camera, then runs the
-// steps of a JSON list, each { mode, scale?, max?, compare?, split?, pixels: [[x, y], ...],
-// screenshot?: FILE }, and prints one JSON line: { consoleErrors, loadSeconds, steps: [{ scale,
-// pixels: [{ x, y, rgb, pick }] }] }.
+// steps of a JSON list, each { mode, scale?, max?, compare?, split?, ev?, walk?, hold?: KEY (held
+// for half a second), pixels: [[x, y], ...], sensors: [k, ...] (where sensor k is drawn, its
+// reading and the pixel there), screenshot?: FILE, button?: true (the page's own
+// screenshot button: the download's size) }, and prints one JSON line: { consoleErrors,
+// loadSeconds, steps: [{ scale, camera, download, pixels: [{ x, y, rgb, pick }] }] }.
 //   node viewer_modes.mjs URL WIDTH HEIGHT 'STEPS'
+import { readFile } from 'node:fs/promises';
 import path from 'node:path';
 import { pathToFileURL } from 'node:url';
 import { CHROMIUM_ARGS, CHROMIUM_PATH } from '../../web/render/render.mjs';
@@ -15,7 +18,8 @@ const { chromium } = await import(pathToFileURL(path.join(WEB_DIR, 'node_modules
 const [url, width, height, stepsJson] = process.argv.slice(2);
 const browser = await chromium.launch({ executablePath: CHROMIUM_PATH, args: CHROMIUM_ARGS, headless: true });
 try {
-  const page = await browser.newPage({ viewport: { width: Number(width), height: Number(height) }, deviceScaleFactor: 1 });
+  const context = await browser.newContext({ viewport: { width: Number(width), height: Number(height) }, deviceScaleFactor: 1, acceptDownloads: true });
+  const page = await context.newPage();
   const consoleErrors = [];
   page.on('console', (msg) => { if (msg.type() === 'error') consoleErrors.push(msg.text()); });
   page.on('pageerror', (error) => consoleErrors.push(String(error)));
@@ -26,6 +30,23 @@ try {
   const steps = [];
   for (const step of JSON.parse(stepsJson)) {
     const scale = await page.evaluate((s) => window.radbakeView.setMode(s.mode, s), step);
+    if (step.hold) {
+      await page.keyboard.down(step.hold);
+      await page.waitForTimeout(500);
+      await page.keyboard.up(step.hold);
+    }
+    let download = null;
+    if (step.button) {
+      const [file] = await Promise.all([page.waitForEvent('download'), page.click('#screenshot')]);
+      download = (await readFile(await file.path())).length;
+    }
+    const camera = await page.evaluate(() => window.radbakeView.cameraPosition());
+    const sensors = [];
+    for (const k of step.sensors || []) {
+      const s = await page.evaluate((i) => window.radbakeView.sensor(i), k);
+      const rgb = await page.evaluate(([px, py]) => window.radbakeView.pixel(px, py), [Math.floor(s.x), Math.floor(s.y)]);
+      sensors.push({ ...s, rgb });
+    }
     const pixels = [];
     for (const [x, y] of step.pixels || []) {
       const rgb = await page.evaluate(([px, py]) => window.radbakeView.pixel(px, py), [x, y]);
@@ -33,7 +54,7 @@ try {
       pixels.push({ x, y, rgb, pick });
     }
     if (step.screenshot) await page.screenshot({ path: step.screenshot });
-    steps.push({ scale, pixels });
+    steps.push({ scale, camera, download, pixels, sensors });
   }
   const loadSeconds = await page.evaluate(() => window.radbakeView.loadSeconds());
   console.log(JSON.stringify({ consoleErrors, loadSeconds, steps }));

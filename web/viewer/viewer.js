@@ -8,7 +8,7 @@ import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
 import { EXRLoader } from 'three/addons/loaders/EXRLoader.js';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { RadbakeLightmapPlugin } from '/radbake-lightmap.js';
-import { drawLegend, niceNumberAtOrAbove, turboGlsl } from '/viewer/legend.js';
+import { drawLegend, niceNumberAtOrAbove, turbo, turboGlsl } from '/viewer/legend.js';
 
 const $ = (id) => document.getElementById(id);
 const canvas = $('view');
@@ -37,7 +37,25 @@ async function loadBake(bake, exposure) {
   gltf.scene.traverse((o) => {
     if (o.isMesh) meshes.push({ mesh: o, baked: o.material, page: pageOf(gltf, json, o.material) });
   });
-  return { bake, gltf, json, record, pages, scene, meshes };
+  return { bake, gltf, json, record, pages, scene, meshes, sensors: await loadSensors(bake, scene) };
+}
+
+// The bake's sensors (sensors.csv: work plane and listed points), as points drawn over the scene
+// in false colour, in front of whatever is nearer, glazing too (drawn last, with the transparent
+// objects: a grid of readings, not a surface); null when
+// it has none.
+async function loadSensors(bake, scene) {
+  if (!(bake.report.files || []).includes('sensors.csv')) return null;
+  const rows = (await (await fetch(bake.url + 'sensors.csv')).text()).trim().split('\n').slice(1).map((l) => l.split(',').map(Number));
+  const geometry = new THREE.BufferGeometry();
+  geometry.setAttribute('position', new THREE.Float32BufferAttribute(rows.flatMap((r) => r.slice(0, 3)), 3));
+  geometry.setAttribute('color', new THREE.Float32BufferAttribute(new Float32Array(rows.length * 3), 3));
+  const points = new THREE.Points(geometry, new THREE.PointsMaterial({
+    size: 9, sizeAttenuation: false, vertexColors: true, toneMapped: false, depthTest: false, transparent: true }));
+  points.renderOrder = 1;
+  points.visible = false;
+  scene.add(points);
+  return { points, lux: rows.map((r) => r[6]) };
 }
 
 // The page a material's light map is on: MOZ_lightmap's texture, as extras.radbake.pages lists it.
@@ -177,19 +195,33 @@ function applyMode() {
   u.valueScale.value = daylight ? 100 / daylightReference() : 1;
   u.logarithmic.value = $('scale').value === 'log' ? 1 : 0;
   const typed = Number($('max').value);
-  u.maxValue.value = typed > 0 ? typed : automaticMax(state.a.pages, u.valueScale.value);
+  const sensors = state.a.sensors;
+  u.maxValue.value = typed > 0 ? typed
+    : mode === 'sensors' ? niceNumberAtOrAbove(Math.max(...sensors.lux))
+    : automaticMax(state.a.pages, u.valueScale.value);
+  if (sensors) {
+    sensors.points.visible = mode === 'sensors';
+    const colours = sensors.points.geometry.attributes.color, colour = new THREE.Color();
+    sensors.lux.forEach((lux, k) => {
+      const f = u.logarithmic.value > 0.5 ? (Math.log10(lux / u.maxValue.value) + 3) / 3 : lux / u.maxValue.value;
+      const [r, g, b] = turbo(f);
+      colour.setRGB(r / 255, g / 255, b / 255, THREE.SRGBColorSpace);
+      colours.setXYZ(k, colour.r, colour.g, colour.b);
+    });
+    colours.needsUpdate = true;
+  }
   for (const bake of [state.a, state.b]) {
     if (!bake) continue;
     for (const m of bake.meshes) {
-      m.mesh.material = mode === 'baked' ? m.baked : mode === 'vertex' ? m.vertex ?? m.baked : m.analysis ?? m.baked;
+      m.mesh.material = mode === 'baked' || mode === 'sensors' ? m.baked : mode === 'vertex' ? m.vertex ?? m.baked : m.analysis ?? m.baked;
     }
   }
   const legend = $('legend');
   const unit = daylight ? '%' : state.a.record.unit;
-  if (mode === 'falsecolour' || mode === 'daylight')
+  if (mode === 'falsecolour' || mode === 'daylight' || mode === 'sensors')
     drawLegend(legend, { kind: 'turbo', max: u.maxValue.value, logarithmic: u.logarithmic.value > 0.5, decades: 3, unit });
   else if (mode === 'difference') drawLegend(legend, { kind: 'difference', scale: u.differenceScale.value });
-  legend.style.display = ['falsecolour', 'daylight', 'difference'].includes(mode) ? 'block' : 'none';
+  legend.style.display = ['falsecolour', 'daylight', 'sensors', 'difference'].includes(mode) ? 'block' : 'none';
   state.scale = { max: u.maxValue.value, logarithmic: u.logarithmic.value > 0.5, decades: 3, unit };
 }
 
@@ -317,6 +349,7 @@ async function start() {
   });
   const modes = $('mode');
   if (daylightReference() > 0) modes.add(new Option('daylight factor', 'daylight'));
+  if (state.a.sensors) modes.add(new Option('sensors (lux)', 'sensors'));
   if (state.b) {
     modes.add(new Option('difference B − A', 'difference'));
     $('compare-row').style.display = 'block';
@@ -352,6 +385,12 @@ window.radbakeView = {
     if (options.max !== undefined) $('max').value = String(options.max);
     if (options.compare) $('compare').value = options.compare;
     if (options.split !== undefined) state.split = options.split;
+    if (options.ev !== undefined) $('ev').value = String(options.ev);
+    if (options.walk !== undefined) {
+      $('walk').checked = options.walk;
+      state.walk = options.walk;
+      controls.enabled = !options.walk;
+    }
     applyMode();
     render();
     return state.scale;
@@ -363,4 +402,10 @@ window.radbakeView = {
     return Array.from(out.slice(0, 3));
   },
   pick,
+  cameraPosition: () => camera.position.toArray(),
+  // Where sensor k is drawn, in CSS pixels (x right, y down), and its reading.
+  sensor: (k) => {
+    const p = new THREE.Vector3().fromBufferAttribute(state.a.sensors.points.geometry.attributes.position, k).project(camera);
+    return { x: (p.x + 1) / 2 * canvas.clientWidth, y: (1 - p.y) / 2 * canvas.clientHeight, lux: state.a.sensors.lux[k] };
+  },
 };
