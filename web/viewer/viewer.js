@@ -155,6 +155,13 @@ function analysisMaterial(uniforms, pageA, pageB, vertexLight) {
 
 const state = { bakes: [], a: null, b: null, mode: 'baked', split: 0.5, walk: false, uniforms: null, scale: null };
 
+// Whether B's pages lie over A's texel for texel (the same scene baked with the same atlas
+// options): the difference compares them so, as radbake diff does.
+function sameLayout(a, b) {
+  return b && b.pages.length === a.pages.length &&
+    b.pages.every((p, k) => p.image.width === a.pages[k].image.width && p.image.height === a.pages[k].image.height);
+}
+
 function setupMaterials() {
   const { a, b } = state;
   const u = state.uniforms = {
@@ -165,7 +172,7 @@ function setupMaterials() {
     if (!bake) continue;
     for (const m of bake.meshes) {
       const page = bake.pages[m.page];
-      const other = bake === a && b && b.pages.length === a.pages.length ? b.pages[m.page] : null;
+      const other = bake === a && sameLayout(a, b) ? b.pages[m.page] : null;
       m.analysis = m.page >= 0 ? analysisMaterial(u, page, other, false) : null;
       m.vertex = m.mesh.geometry.attributes._baked_light ? analysisMaterial(u, page, null, true) : null;
     }
@@ -351,7 +358,8 @@ async function start() {
   if (daylightReference() > 0) modes.add(new Option('daylight factor', 'daylight'));
   if (state.a.sensors) modes.add(new Option('sensors (lux)', 'sensors'));
   if (state.b) {
-    modes.add(new Option('difference B − A', 'difference'));
+    if (sameLayout(state.a, state.b)) modes.add(new Option('difference B − A', 'difference'));
+    else $('title').textContent += ' (pages laid out differently: no difference)';
     $('compare-row').style.display = 'block';
   }
   for (const id of ['mode', 'scale', 'max', 'ev']) $(id).addEventListener('input', () => { state.mode = modes.value; applyMode(); });
