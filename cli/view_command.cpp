@@ -62,6 +62,8 @@ nlohmann::json bakes_json(const std::vector<fs::path>& folders) {
   nlohmann::json out = nlohmann::json::array();
   for (size_t k = 0; k < folders.size(); ++k) {
     nlohmann::json report = nlohmann::json::parse(slurp(folders[k] / "report.json"), nullptr, false);
+    if (!report.is_object())
+      throw InputError("'" + clipped(folders[k].string()) + "/report.json' is not a radbake report (not a JSON object)");
     std::string name;
     for (const auto& f : report.value("files", nlohmann::json::array()))
       if (f.is_string() && f.get<std::string>().size() > 5 &&
@@ -103,6 +105,9 @@ int run_view(const ViewCommand& command) {
     response.set_content(slurp(web / "viewer" / "index.html"), "text/html; charset=utf-8");
   });
   const nlohmann::json bakes = bakes_json(folders);
+  for (const auto& bake : bakes)
+    if (bake["gltf"].get<std::string>().empty())
+      throw InputError("'" + clipped(bake["folder"].get<std::string>()) + "' lists no .gltf in its report.json");
   server.Get("/api/bakes", [&](const httplib::Request&, httplib::Response& response) {
     response.set_content(bakes.dump(), "application/json");
   });

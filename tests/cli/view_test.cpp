@@ -128,10 +128,16 @@ TEST(View, ServesTheFoldersFilesAndNothingElseOnLocalhostOnly) {
 }
 
 TEST(View, AFolderThatIsNotABakeIsRefusedWithOneLine) {
-  const test::Outcome r = test::radbake("view " + test::fresh_folder("view_not_a_bake") + " --no-open");
-  EXPECT_EQ(r.status, 2);
-  EXPECT_NE(r.err.find("is not a radbake output folder"), std::string::npos) << r.err;
-  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  const std::string empty = test::fresh_folder("view_not_a_bake");
+  const std::string garbled = test::fresh_folder("view_garbled_report");
+  std::ofstream(garbled + "/report.json") << "[1, 2";
+  for (const auto& [folder, says] : {std::pair<std::string, std::string>{empty, "is not a radbake output folder"},
+                                     {garbled, "is not a radbake report"}}) {
+    const test::Outcome r = test::radbake("view " + folder + " --no-open");
+    EXPECT_EQ(r.status, 2) << r.err;
+    EXPECT_NE(r.err.find(says), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  }
 }
 
 // The page in headless Chromium at 256 x 256 through the sample's own camera, running `steps`
