@@ -89,7 +89,8 @@ OUTDIR receives NAME.gltf with lightmap UVs (TEXCOORD_1), baked COLOR_0 and MOZ_
 materials, the lightmap pages as NAME_lightmap_N.exr (linear) and .png (sRGB), and report.json.
 
 `radbake uv` unwraps without baking and prints what the atlas is worth: pages, density, charts,
-utilisation, L2 stretch (Sander et al. 2001; 1 = none), seam length, overlapping texels, flipped
+utilisation counted two ways (texels a triangle touches, and texels whose centre a triangle
+covers), L2 stretch (Sander et al. 2001; 1 = none), seam length, overlapping texels, flipped
 triangles, padding violations, time. With --evaluate-texcoord N it measures the scene's own
 TEXCOORD_N as one page of --max-page-size instead (for comparing UVs made elsewhere).
 

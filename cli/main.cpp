@@ -236,7 +236,7 @@ void print_stats(const radbake::Atlas& atlas, const radbake::UvCommand& cmd, dou
     nlohmann::ordered_json j = {
         {"input", cmd.input}, {"pages", atlas.pages.size()}, {"page_texels", s.page_texels},
         {"covered_texels", s.covered_texels}, {"texel_density_per_m", atlas.texel_density},
-        {"density_lowered", atlas.density_lowered}, {"density_choice", atlas.density_choice}, {"charts", s.charts}, {"utilisation", s.utilisation},
+        {"density_lowered", atlas.density_lowered}, {"density_choice", atlas.density_choice}, {"charts", s.charts}, {"utilisation", s.utilisation}, {"utilisation_centres", s.utilisation_centres},
         {"stretch_l2", s.stretch_l2}, {"stretch_max", s.stretch_max}, {"seam_length_m", s.seam_length},
         {"overlapping_texels", s.overlapping_texels}, {"flipped_triangles", s.flipped_triangles},
         {"padding_violations", s.padding_violations}, {"padding", cmd.atlas.padding}, {"seconds", s.seconds},
@@ -252,8 +252,10 @@ void print_stats(const radbake::Atlas& atlas, const radbake::UvCommand& cmd, dou
   if (cmd.evaluate_texcoord < 0)
     std::printf("  texel density       %.4g texels/m (%s)\n", atlas.texel_density, atlas.density_choice.c_str());
   std::printf("  charts              %zu\n", s.charts);
-  std::printf("  utilisation         %.1f%% (%zu covered texels of %zu)\n", 100 * s.utilisation, s.covered_texels,
-              s.page_texels);
+  std::printf("  utilisation         %.1f%% (%zu texels touched by a triangle of %zu)\n", 100 * s.utilisation,
+              s.covered_texels, s.page_texels);
+  std::printf("  centres covered     %.1f%% (%zu texels whose centre a triangle covers)\n", 100 * s.utilisation_centres,
+              s.centre_covered_texels);
   std::printf("  L2 stretch          %.4f area-weighted, %.4f worst triangle (1 = none)\n", s.stretch_l2, s.stretch_max);
   if (cmd.evaluate_texcoord < 0) std::printf("  seam length         %.3f m\n", s.seam_length);
   std::printf("  overlapping texels  %zu\n", s.overlapping_texels);

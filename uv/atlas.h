@@ -79,13 +79,17 @@ struct AtlasMesh {
 struct AtlasStats {
   size_t charts = 0;
   double utilisation = 0;      // covered texels / page texels, over all pages
+  // Texels whose centre a triangle covers / page texels: the stricter count (a texel a chart only
+  // grazes is not counted), comparable with tools that count so.
+  double utilisation_centres = 0;
   double stretch_l2 = 0;       // Sander et al. 2001 L2 stretch over the whole atlas, 1 = none
   double stretch_max = 0;      // the worst triangle's L2 stretch, same normalisation
   double seam_length = 0;      // metres of edges where charts meet
   size_t overlapping_texels = 0;   // texels covered by two charts
   size_t flipped_triangles = 0;    // triangles wound against the rest of their chart
   size_t padding_violations = 0;   // texels with another chart's texel closer than the padding
-  size_t covered_texels = 0, page_texels = 0;
+  size_t covered_texels = 0, page_texels = 0;  // covered: touched by a triangle (any area)
+  size_t centre_covered_texels = 0;
   double seconds = 0;
 };
 

@@ -66,13 +66,26 @@ Atlas layout_from_uvs(const std::vector<MeshView>& meshes, const std::vector<con
   return atlas;
 }
 
+namespace {
+
+// Whether p lies in the triangle (either winding), edges included.
+bool contains_point(const Vec2 (&c)[3], Vec2 p) {
+  const float d0 = cross2(c[1] - c[0], p - c[0]), d1 = cross2(c[2] - c[1], p - c[1]), d2 = cross2(c[0] - c[2], p - c[2]);
+  return (d0 >= 0 && d1 >= 0 && d2 >= 0) || (d0 <= 0 && d1 <= 0 && d2 <= 0);
+}
+
+}  // namespace
+
 AtlasStats measure_atlas(const std::vector<MeshView>& meshes, const Atlas& atlas, int padding) {
   AtlasStats s;
   s.charts = atlas.chart_count;
-  // Per page, per texel: the chart covering it (-1 none, -2 several).
+  // Per page, per texel: the chart covering it (-1 none, -2 several), and whether a triangle covers
+  // its centre.
   std::vector<std::vector<int64_t>> owner;
+  std::vector<std::vector<uint8_t>> centre_covered;
   for (const AtlasPage& p : atlas.pages) {
     owner.emplace_back(size_t(p.width) * p.height, -1);
+    centre_covered.emplace_back(size_t(p.width) * p.height, 0);
     s.page_texels += size_t(p.width) * p.height;
   }
   double sum_l2_area = 0, area_3d = 0, area_uv = 0, worst = 0;
@@ -99,10 +112,13 @@ AtlasStats measure_atlas(const std::vector<MeshView>& meshes, const Atlas& atlas
         uv[k] = {am.uvs[v].x * page.width, am.uvs[v].y * page.height};
         q[k] = meshes[m].positions[am.source_vertex[v]];
       }
+      std::vector<uint8_t>& centres = centre_covered[size_t(am.page)];
       for_each_covered_texel(uv[0], uv[1], uv[2], page.width, page.height, [&](const TexelPiece& piece) {
         int64_t& o = grid[size_t(piece.y) * page.width + piece.x];
         if (o == -1) o = chart;
         else if (o != int64_t(chart) && o != -2) o = -2;
+        if (contains_point(uv, {float(piece.x) + 0.5f, float(piece.y) + 0.5f}))
+          centres[size_t(piece.y) * page.width + piece.x] = 1;
       });
       // Sander et al. 2001: singular values of the map from the texture to the surface.
       double signed_area = 0.5 * double(cross2(uv[1] - uv[0], uv[2] - uv[0]));
@@ -147,7 +163,10 @@ AtlasStats measure_atlas(const std::vector<MeshView>& meshes, const Atlas& atlas
         s.padding_violations += crowded;
       }
   }
+  for (const std::vector<uint8_t>& centres : centre_covered)
+    for (uint8_t c : centres) s.centre_covered_texels += c;
   s.utilisation = s.page_texels ? double(s.covered_texels) / double(s.page_texels) : 0;
+  s.utilisation_centres = s.page_texels ? double(s.centre_covered_texels) / double(s.page_texels) : 0;
   return s;
 }
 

@@ -346,7 +346,7 @@ TEST(Cli, InterruptCancelsAndLeavesNothing) {
 TEST(Cli, UvPrintsTheAtlasStatistics) {
   Outcome r = radbake("uv " + test::source_path("samples/cornell_box/cornell_box.gltf") + " --stats");
   ASSERT_EQ(r.status, 0) << r.err;
-  for (const char* line : {"utilisation", "L2 stretch", "seam length", "overlapping texels  0", "flipped triangles   0",
+  for (const char* line : {"utilisation", "centres covered", "L2 stretch", "seam length", "overlapping texels  0", "flipped triangles   0",
                            "padding violations  0"})
     EXPECT_NE(r.out.find(line), std::string::npos) << line << "\n" << r.out;
 
@@ -358,6 +358,10 @@ TEST(Cli, UvPrintsTheAtlasStatistics) {
   EXPECT_EQ(s["padding_violations"], 0);
   EXPECT_EQ(s["padding"], 3);
   EXPECT_GT(s["utilisation"].get<double>(), 0.3);
+  // A texel whose centre a triangle covers is touched by it: the stricter count is the smaller,
+  // and on a padded sphere's charts most touched texels have their centres covered.
+  EXPECT_LE(s["utilisation_centres"].get<double>(), s["utilisation"].get<double>());
+  EXPECT_GT(s["utilisation_centres"].get<double>(), 0.8 * s["utilisation"].get<double>());
   EXPECT_LT(s["stretch_l2"].get<double>(), 1.05);
 }
 
