@@ -4,7 +4,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -26,5 +28,13 @@ Outcome run(const std::string& command) {
 }
 
 Outcome radbake(const std::string& args) { return run(std::string(RADBAKE_BINARY) + " " + args); }
+
+void expect_one_line_refusal(const Outcome& r, const std::string& says, const std::string& unwritten) {
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_EQ(r.err.rfind("radbake: error: ", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find(says), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(unwritten)) << unwritten;
+}
 
 }  // namespace radbake::test

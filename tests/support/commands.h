@@ -18,4 +18,8 @@ Outcome radbake(const std::string& args);
 
 std::string slurp(const std::string& path);
 
+// A refused command: exit status 2, one `radbake: error:` line that holds `says`, and nothing
+// written at `unwritten` (the output folder it was given).
+void expect_one_line_refusal(const Outcome& r, const std::string& says, const std::string& unwritten);
+
 }  // namespace radbake::test
