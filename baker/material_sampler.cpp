@@ -81,6 +81,7 @@ MaterialSampler::MaterialSampler(const Scene& scene, const Surface& surface, flo
                           : glazing_transmittance >= 0 ? glazing_transmittance
                                                        : clear_pane_transmittance(1, m.ior);
     pane_transmittance_.push_back(m.transmission * glazing);
+    clear_pane_along_normal_.push_back(clear_pane_transmittance(1, m.ior));
     pane_diffuse_ratio_.push_back(m.transmission > 0 ? diffuse_over_normal(m.ior) : 1.0f);
     alpha_texture_.push_back(m.alpha_mode != AlphaMode::Opaque && m.base_color_texture.present()
                                  ? texture_for(m.base_color_texture.image, Decode::Alpha)
@@ -225,7 +226,7 @@ float MaterialSampler::transmittance(uint32_t triangle, Vec2 bary, Vec3 directio
     // pane of the material's index loses more to reflection.
     const float ior = scene_.materials[size_t(mi)].ior;
     const float c = std::fabs(dot(direction, surface_.normal[triangle])) / length(direction);
-    pane *= clear_pane_transmittance(c, ior) / clear_pane_transmittance(1, ior);
+    pane *= clear_pane_transmittance(c, ior) / clear_pane_along_normal_[size_t(mi)];
   }
   return (1 - present) + present * pane;
 }

@@ -76,6 +76,7 @@ class MaterialSampler {
   std::vector<int> base_texture_, metallic_texture_, emissive_texture_, alpha_texture_;
   std::vector<float> pane_transmittance_;  // per material: what its glazing lets through along its normal
   std::vector<float> pane_diffuse_ratio_;  // per material: its diffuse transmittance over that
+  std::vector<float> clear_pane_along_normal_;  // per material: a clear pane of its index, along the normal
 };
 
 }  // namespace radbake

@@ -16,6 +16,15 @@ AtlasOptions coarse() {
   return atlas;
 }
 
+// A sky of the same luminance (cd/m2) everywhere above the horizon, alone.
+BakeOptions under_a_uniform_sky(float luminance) {
+  BakeOptions options;
+  options.sky.enabled = true;
+  options.sky.distribution.model = SkyModel::Uniform;
+  options.sky.zenith_luminance = luminance;
+  return options;
+}
+
 TEST(Sensors, InTheOpenTheyReadTheSkyAndALampExactly) {
   Scene scene;
   const int grey = test::add_material(scene, {0.5f, 0.5f, 0.5f});
@@ -24,10 +33,7 @@ TEST(Sensors, InTheOpenTheyReadTheSkyAndALampExactly) {
   lamp.intensity = 500;
   lamp.position = {2, 3, 2};
   scene.lights.push_back(lamp);
-  BakeOptions options;
-  options.sky.enabled = true;
-  options.sky.distribution.model = SkyModel::Uniform;
-  options.sky.zenith_luminance = 1000;
+  BakeOptions options = under_a_uniform_sky(1000);
   options.sky.ground_reflectance = 0;
   // Over the floor facing up, and beyond its edge facing back at it.
   const Vec3 up_at{2.5f, 1, 2}, side_at{6, 1, 2};
@@ -127,10 +133,7 @@ TEST(WorkPlane, AtHeightZeroItIsNotShadedByTheFloorItLiesOn) {
   Scene scene;
   const int grey = test::add_material(scene, {0.5f, 0.5f, 0.5f});
   test::add_quad(scene, {0, 0, 2}, {2, 0, 0}, {0, 0, -2}, grey, "floor");
-  BakeOptions options;
-  options.sky.enabled = true;
-  options.sky.distribution.model = SkyModel::Uniform;
-  options.sky.zenith_luminance = 1000;
+  BakeOptions options = under_a_uniform_sky(1000);
   options.sky.rays = 64;
   options.work_plane.enabled = true;
   options.work_plane.height = 0;
@@ -144,10 +147,7 @@ TEST(SurfaceStatistics, PerInstanceAreaMeanAndUniformity) {
   Scene scene;
   const int grey = test::add_material(scene, {0.5f, 0.5f, 0.5f});
   test::add_quad(scene, {0, 0, 2}, {2, 0, 0}, {0, 0, -2}, grey, "terrace");
-  BakeOptions options;
-  options.sky.enabled = true;
-  options.sky.distribution.model = SkyModel::Uniform;
-  options.sky.zenith_luminance = 1000;
+  BakeOptions options = under_a_uniform_sky(1000);
   options.sky.rays = 16;
   const BakeResult r = test::bake_scene(scene, coarse(), options).result;
   ASSERT_EQ(r.report.surfaces.size(), 1u);
