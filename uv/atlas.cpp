@@ -25,7 +25,7 @@ namespace {
 
 // Shares of the unwrap's progress: charts (grown and flattened), then packing, then measuring.
 constexpr double kChartsEnd = 0.6, kPackingEnd = 0.95;
-// Packing attempts: one, then a bracket and a bisection for the automatic density (below).
+// Packing attempts: one, or a search for the automatic density (below).
 constexpr int kMostPackings = 48;
 
 double world_area(const MeshView& mesh) {
@@ -126,8 +126,9 @@ std::vector<Chart> make_charts(const std::vector<MeshView>& meshes, const std::v
   ChartOptions chart_options;
   chart_options.max_normal_deviation_degrees = options.max_chart_normal_deviation;
   chart_options.hard_edge_degrees = options.hard_edge_angle;
-  // Below about 4 x 4 texels a chart holds less than its padding costs.
+  // Below about 4 x 4 texels, or 4 texels across, a chart holds less than its padding costs.
   chart_options.small_chart_area = 16.0f / (density * density);
+  chart_options.sliver_width = 4.0f / density;
   std::vector<Chart> charts;
   double triangles = 0, done = 0;
   for (size_t m = 0; m < meshes.size(); ++m) triangles += generate[m] ? double(meshes[m].triangle_count) : 0;
@@ -140,7 +141,7 @@ std::vector<Chart> make_charts(const std::vector<MeshView>& meshes, const std::v
     int count = 0;
     std::vector<int> chart_of_face = grow_charts(hm, chart_options, &count, progress);
     progress.step(mid, kChartsEnd * done / triangles);
-    std::vector<Chart> mine = flatten_charts(hm, chart_of_face, count, uint32_t(m), options.rotate_charts, progress);
+    std::vector<Chart> mine = flatten_charts(hm, chart_of_face, count, uint32_t(m), chart_options, options.rotate_charts, progress);
     // Seams: mesh edges whose two faces ended up in different charts.
     std::vector<int> final_chart(meshes[m].triangle_count, -1);
     for (size_t c = 0; c < mine.size(); ++c)
@@ -233,36 +234,52 @@ Atlas ensure_lightmap_uvs(const std::vector<MeshView>& meshes, const AtlasOption
   std::vector<Chart> charts = make_charts(meshes, generate, options, density, &seam_length, progress);
 
   int packings = 0;
-  auto pack = [&](float d) {
+  auto pack = [&](float d, PackGoal goal) {
     const double share = (kPackingEnd - kChartsEnd) / kMostPackings;
     progress.step(kChartsEnd + share * packings, kChartsEnd + share * (packings + 1));
     packings = std::min(packings + 1, kMostPackings - 1);
-    return pack_charts(charts, meshes.size(), d, page_size, options.padding, options.rotate_charts, progress);
+    return pack_charts(charts, meshes.size(), d, page_size, options.padding, options.rotate_charts, goal, progress);
   };
-  auto fits = [](const PackResult& r) { return r.pages.size() <= 1 && r.downscaled_meshes.empty(); };
-  PackResult packed = pack(density);
-  if (!charts.empty() && (options.texel_density <= 0 || (options.fit_one_page && !fits(packed)))) {
-    // The highest density that fits one page: widen a bracket round the first try, then bisect.
+  auto fits = [](const PackResult& r) { return r.pages.size() == 1 && r.downscaled_meshes.empty(); };
+  PackResult packed;
+  if (charts.empty() || (options.texel_density > 0 && !options.fit_one_page)) {
+    packed = pack(density, PackGoal::AsManyPagesAsNeeded);
+  } else {
+    // The highest density that fits one page, up to the cap: a bracket round the first try, then
+    // narrowed to 0.1%. Each try guesses from the last: a page filled to a share f suggests
+    // sqrt(1/f) times the density, charts placed up to a share p before one did not fit suggest
+    // sqrt(p) times; guesses stay inside the bracket, and halve it when they would not shrink it.
     const float cap = options.texel_density > 0 ? options.texel_density : budget_density;
     float lo = 0, hi = 0;  // highest known to fit, lowest known not to
-    (fits(packed) ? lo : hi) = density;
-    for (int step = 0; step < 40 && (lo == 0 || hi == 0); ++step) {
-      if (lo > 0 && lo >= cap) break;
-      float d = lo == 0 ? hi * 0.8f : std::min(lo * 1.25f, cap);
-      (fits(pack(d)) ? lo : hi) = d;
-    }
-    for (int step = 0; step < 6 && lo > 0 && hi > 0; ++step) {
-      float d = 0.5f * (lo + hi);
-      (fits(pack(d)) ? lo : hi) = d;
+    PackResult best;
+    float next = density;
+    for (int step = 0; step < 40; ++step) {
+      const float d = next;
+      PackResult r = pack(d, PackGoal::OnePageOrNothing);
+      float guess;
+      if (fits(r)) {
+        const double filled = double(r.pages[0].width) * r.pages[0].height / (double(page_size) * page_size);
+        guess = d * float(std::sqrt(1 / std::max(filled, 0.25)));
+        lo = d, best = std::move(r);
+        if (lo >= cap) break;
+      } else {
+        guess = d * float(std::sqrt(std::max(r.placed_share, 0.25))) * 0.99f;
+        hi = d;
+      }
+      if (lo > 0 && hi > 0 && hi - lo <= 0.001f * lo) break;
+      if (hi == 0) next = std::min(std::max(guess, lo * 1.05f), cap);
+      else if (lo == 0) next = std::min(guess, hi * 0.95f);
+      else next = guess > lo + 0.25f * (hi - lo) && guess < hi - 0.25f * (hi - lo) ? guess : 0.5f * (lo + hi);
     }
     if (lo > 0) {
       density = lo;
-      packed = pack(density);
+      packed = std::move(best);
       atlas.density_lowered = options.texel_density > 0 && density < options.texel_density;
       if (atlas.density_lowered)
         atlas.warnings.push_back("the density was lowered from " + std::to_string(options.texel_density) + " to " +
                                  std::to_string(density) + " texels/m to fit one page");
     } else {
+      packed = pack(density, PackGoal::AsManyPagesAsNeeded);
       atlas.warnings.push_back("the charts do not fit one " + std::to_string(page_size) +
                                "-texel page at any density; using " + std::to_string(packed.pages.size()) + " pages");
     }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <map>
 #include <unordered_map>
 
 #include "uv/charts.h"
@@ -267,28 +268,35 @@ std::vector<Vec2> convex_hull(std::vector<Vec2> points) {
   return hull;
 }
 
-// Turns the chart so its bounding rectangle is smallest (a side of the best rectangle lies along
-// a hull edge) when charts may turn, and moves its minimum corner to the origin.
-void fit_bounding_rectangle(Chart& chart, bool may_rotate) {
+// The direction of the smallest rectangle round the points (a side of it lies along a hull edge),
+// and that rectangle's sides along and across it.
+Vec2 smallest_rectangle(const std::vector<Vec2>& points, Vec2* sides) {
+  std::vector<Vec2> hull = convex_hull(points);
   Vec2 best_axis{1, 0};
-  if (may_rotate) {
-    std::vector<Vec2> hull = convex_hull(chart.corner_uv);
-    float best_area = INFINITY;
-    for (size_t i = 0; i < hull.size(); ++i) {
-      Vec2 e = hull[(i + 1) % hull.size()] - hull[i];
-      float len = std::sqrt(e.x * e.x + e.y * e.y);
-      if (len <= 0) continue;
-      Vec2 u = e * (1 / len);
-      float lo_u = INFINITY, hi_u = -INFINITY, lo_v = INFINITY, hi_v = -INFINITY;
-      for (Vec2 p : hull) {
-        float pu = p.x * u.x + p.y * u.y, pv = -p.x * u.y + p.y * u.x;
-        lo_u = std::min(lo_u, pu), hi_u = std::max(hi_u, pu);
-        lo_v = std::min(lo_v, pv), hi_v = std::max(hi_v, pv);
-      }
-      float area = (hi_u - lo_u) * (hi_v - lo_v);
-      if (area < best_area * 0.9999f) best_area = area, best_axis = u;
+  float best_area = INFINITY;
+  *sides = {0, 0};
+  for (size_t i = 0; i < hull.size(); ++i) {
+    Vec2 e = hull[(i + 1) % hull.size()] - hull[i];
+    float len = std::sqrt(e.x * e.x + e.y * e.y);
+    if (len <= 0) continue;
+    Vec2 u = e * (1 / len);
+    float lo_u = INFINITY, hi_u = -INFINITY, lo_v = INFINITY, hi_v = -INFINITY;
+    for (Vec2 p : hull) {
+      float pu = p.x * u.x + p.y * u.y, pv = -p.x * u.y + p.y * u.x;
+      lo_u = std::min(lo_u, pu), hi_u = std::max(hi_u, pu);
+      lo_v = std::min(lo_v, pv), hi_v = std::max(hi_v, pv);
     }
+    float area = (hi_u - lo_u) * (hi_v - lo_v);
+    if (area < best_area * 0.9999f) best_area = area, best_axis = u, *sides = {hi_u - lo_u, hi_v - lo_v};
   }
+  return best_axis;
+}
+
+// Turns the chart so its bounding rectangle is smallest when charts may turn, and moves its
+// minimum corner to the origin.
+void fit_bounding_rectangle(Chart& chart, bool may_rotate) {
+  Vec2 sides;
+  const Vec2 best_axis = may_rotate ? smallest_rectangle(chart.corner_uv, &sides) : Vec2{1, 0};
   Vec2 lo{INFINITY, INFINITY}, hi{-INFINITY, -INFINITY};
   for (Vec2& p : chart.corner_uv) {
     p = {p.x * best_axis.x + p.y * best_axis.y, -p.x * best_axis.y + p.y * best_axis.x};
@@ -318,15 +326,113 @@ Chart make_chart(const HalfEdgeMesh& hm, const LocalChart& c, uint32_t mesh_inde
   return chart;
 }
 
+// Flattens `faces` (one connected piece): a plane by projection; a curved disc by a conformal map.
+// False when the piece is a curved ring, or its map folds or overlaps itself.
+bool map_chart(const HalfEdgeMesh& hm, const FaceList& faces, LocalChart& c) {
+  static const float cos_planar = std::cos(0.5f * 3.14159265f / 180.0f);
+  c = gather(hm, faces);
+  bool planar = std::all_of(faces.begin(), faces.end(), [&](int f) { return dot(hm.face_normal[size_t(f)], c.normal) >= cos_planar; });
+  // A curved chart must be a disc: a ring (the top of a torus, a band round a cylinder) flattens
+  // into an annulus, and rings are what fold.
+  if (planar) return project(c), maps_cleanly(hm, c);
+  return boundary_loops(hm, faces) <= 1 && conformal_map(hm, c) && maps_cleanly(hm, c);
+}
+
+// Sander et al.'s L2 stretch of a mapped chart, scaled to its area as make_chart scales it: the
+// whole chart's (area-weighted) and its worst face's.
+Vec2 chart_stretch(const HalfEdgeMesh& hm, const LocalChart& c) {
+  double area_3d = 0, area_uv = 0, sum = 0, worst = 0;
+  for (int f : c.faces) {
+    int v[3];
+    corners(hm, c, f, v);
+    const Vec2 t[3] = {c.uv[size_t(v[0])], c.uv[size_t(v[1])], c.uv[size_t(v[2])]};
+    const Vec3 q[3] = {c.position[size_t(v[0])], c.position[size_t(v[1])], c.position[size_t(v[2])]};
+    const double a = 0.5 * double(cross2(t[1] - t[0], t[2] - t[0])), a3 = hm.face_area[size_t(f)];
+    if (!(a > 0) || !(a3 > 0)) continue;
+    Vec3 ss = (q[0] * (t[1].y - t[2].y) + q[1] * (t[2].y - t[0].y) + q[2] * (t[0].y - t[1].y)) / float(2 * a);
+    Vec3 st = (q[0] * (t[2].x - t[1].x) + q[1] * (t[0].x - t[2].x) + q[2] * (t[1].x - t[0].x)) / float(2 * a);
+    const double l2 = std::sqrt((double(dot(ss, ss)) + double(dot(st, st))) / 2);
+    sum += l2 * l2 * a3, area_3d += a3, area_uv += a, worst = std::max(worst, l2);
+  }
+  if (!(area_3d > 0)) return {1, 1};
+  const double normaliser = std::sqrt(area_uv / area_3d);
+  return {float(std::sqrt(sum / area_3d) * normaliser), float(worst * normaliser)};
+}
+
+// Slivers and specks (thinner than options.sliver_width, or smaller than small_chart_area) cost
+// more in padding than they hold: each joins the neighbour it shares the longest unfolded edge
+// with (an edge folding less than the hard-edge angle), if the two flatten together cleanly
+// and stretch no more than they do apart (L2 within 0.1%, the worst face within 1%): a chamfer
+// hinged onto its face, a strip of a thin rod onto the next strip.
+void merge_slivers(const HalfEdgeMesh& hm, const ChartOptions& options, std::vector<LocalChart>& charts,
+                   UnwrapProgress& progress) {
+  const float cos_fold = std::cos(options.hard_edge_degrees * 3.14159265f / 180.0f);
+  std::unordered_map<int, size_t> chart_of;  // face -> index into charts
+  for (size_t i = 0; i < charts.size(); ++i)
+    for (int f : charts[i].faces) chart_of[f] = i;
+  // Sizes in metres: a conformal map keeps angles, not scale, so its UVs are scaled by the ratio
+  // of areas, as make_chart scales them.
+  auto is_sliver = [&](const LocalChart& c) {
+    double area_3d = 0, area_uv = 0;
+    for (int f : c.faces) area_3d += hm.face_area[size_t(f)], area_uv += uv_area(hm, c, f);
+    Vec2 sides;
+    smallest_rectangle(c.uv, &sides);
+    const double across = std::min(sides.x, sides.y) * std::sqrt(area_3d / std::max(area_uv, 1e-30));
+    return across < options.sliver_width || area_3d < options.small_chart_area;
+  };
+  std::vector<size_t> order(charts.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::vector<double> area(charts.size(), 0);
+  for (size_t i = 0; i < charts.size(); ++i)
+    for (int f : charts[i].faces) area[i] += hm.face_area[size_t(f)];
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return area[a] < area[b]; });
+  std::vector<bool> gone(charts.size(), false);
+  for (size_t k = 0; k < order.size(); ++k) {
+    progress.poll();
+    const size_t s = order[k];
+    if (gone[s] || !is_sliver(charts[s])) continue;
+    std::map<size_t, float> shared;
+    for (int f : charts[s].faces)
+      for (auto h : hm.mesh.fh_range(HalfEdgeTriMesh::FaceHandle(f))) {
+        auto o = h.opp();
+        if (o.is_boundary()) continue;
+        const int g = o.face().idx();
+        auto it = chart_of.find(g);
+        if (it == chart_of.end() || it->second == s || dot(hm.face_normal[size_t(f)], hm.face_normal[size_t(g)]) < cos_fold) continue;
+        shared[it->second] += hm.mesh.calc_edge_length(h);
+      }
+    std::vector<std::pair<float, size_t>> neighbours;
+    for (auto [n, length] : shared) neighbours.push_back({-length, n});
+    std::sort(neighbours.begin(), neighbours.end());
+    const Vec2 own = chart_stretch(hm, charts[s]);
+    for (auto [unused, n] : neighbours) {
+      FaceList faces = charts[n].faces;
+      faces.insert(faces.end(), charts[s].faces.begin(), charts[s].faces.end());
+      LocalChart merged;
+      if (!map_chart(hm, faces, merged)) continue;
+      const Vec2 theirs = chart_stretch(hm, charts[n]), both = chart_stretch(hm, merged);
+      if (both.x > std::max(own.x, theirs.x) * 1.001f || both.y > std::max(own.y, theirs.y) * 1.01f) continue;
+      for (int f : charts[s].faces) chart_of[f] = n;
+      charts[n] = std::move(merged);
+      gone[s] = true;
+      break;
+    }
+  }
+  std::vector<LocalChart> left;
+  for (size_t i = 0; i < charts.size(); ++i)
+    if (!gone[i]) left.push_back(std::move(charts[i]));
+  charts = std::move(left);
+}
+
 }  // namespace
 
 std::vector<Chart> flatten_charts(const HalfEdgeMesh& hm, const std::vector<int>& chart_of_face, int chart_count,
-                                  uint32_t mesh_index, bool may_rotate, UnwrapProgress& progress) {
+                                  uint32_t mesh_index, const ChartOptions& options, bool may_rotate,
+                                  UnwrapProgress& progress) {
   std::vector<FaceList> pending{size_t(chart_count)};
   for (size_t f = 0; f < chart_of_face.size(); ++f)
     if (chart_of_face[f] >= 0) pending[size_t(chart_of_face[f])].push_back(int(f));
-  const float cos_planar = std::cos(0.5f * 3.14159265f / 180.0f);
-  std::vector<Chart> out;
+  std::vector<LocalChart> mapped;
   size_t flattened = 0;  // faces, for progress: a chart split in two is counted again
   while (!pending.empty()) {
     FaceList faces = std::move(pending.back());
@@ -335,16 +441,11 @@ std::vector<Chart> flatten_charts(const HalfEdgeMesh& hm, const std::vector<int>
     for (FaceList& part : connected_parts(hm, faces)) {
       progress.at(double(flattened) / double(chart_of_face.size()));
       flattened += part.size();
-      LocalChart c = gather(hm, part);
-      bool planar = std::all_of(part.begin(), part.end(),
-                                [&](int f) { return dot(hm.face_normal[size_t(f)], c.normal) >= cos_planar; });
-      // A curved chart must be a disc: a ring (the top of a torus, a band round a cylinder)
-      // flattens into an annulus whose hole no packer can use, and rings are what fold.
-      bool disc = planar || boundary_loops(hm, part) <= 1;
-      bool mapped = disc && (planar ? (project(c), true) : conformal_map(hm, c));
-      if (part.size() == 1 || (mapped && maps_cleanly(hm, c))) {
-        if (!mapped) project(c);
-        out.push_back(make_chart(hm, c, mesh_index, may_rotate));
+      LocalChart c;
+      const bool mapped_whole = map_chart(hm, part, c);
+      if (mapped_whole || part.size() == 1) {
+        if (!mapped_whole) project(c);
+        mapped.push_back(std::move(c));
         continue;
       }
       auto [a, b] = halve(hm, part);
@@ -352,6 +453,9 @@ std::vector<Chart> flatten_charts(const HalfEdgeMesh& hm, const std::vector<int>
       pending.push_back(std::move(b));
     }
   }
+  if (options.sliver_width > 0 || options.small_chart_area > 0) merge_slivers(hm, options, mapped, progress);
+  std::vector<Chart> out;
+  for (const LocalChart& c : mapped) out.push_back(make_chart(hm, c, mesh_index, may_rotate));
   // The order charts are produced in depends only on the mesh: sort for stable output anyway.
   std::sort(out.begin(), out.end(), [](const Chart& a, const Chart& b) { return a.triangles[0] < b.triangles[0]; });
   return out;

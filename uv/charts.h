@@ -44,6 +44,8 @@ struct ChartOptions {
   float max_normal_deviation_degrees = 50;  // a chart's faces stay within this cone of its normal
   float hard_edge_degrees = 40;             // edges folding more than this are always seams
   float small_chart_area = 0;               // m^2; charts smaller than this merge into a neighbour
+  float sliver_width = 0;                   // m; flattened charts thinner than this join a neighbour
+                                            // when the two flatten together without more stretch
   // A curved chart holds at most this share of its mesh's area, so no chart wraps round a shape
   // (the top of a torus is a ring of normals all within any cone); flat charts are not capped.
   float max_curved_chart_fraction = 1.0f / 12;
@@ -58,9 +60,12 @@ std::vector<int> grow_charts(const HalfEdgeMesh& mesh, const ChartOptions& optio
 
 // Flattens each chart: planar ones by projection, curved ones by least-squares conformal maps
 // (Levy et al. 2002) solved with Eigen. A chart whose map flips or overlaps itself is split in two
-// until each piece maps cleanly.
+// until each piece maps cleanly. Then slivers and specks (options.sliver_width, small_chart_area)
+// join a neighbour across an edge that is not hard, where the two flatten together cleanly and
+// stretch no more than apart.
 std::vector<Chart> flatten_charts(const HalfEdgeMesh& mesh, const std::vector<int>& chart_of_face, int chart_count,
-                                  uint32_t mesh_index, bool may_rotate, UnwrapProgress& progress);
+                                  uint32_t mesh_index, const ChartOptions& options, bool may_rotate,
+                                  UnwrapProgress& progress);
 
 struct ChartPlacement {
   int page = -1;
@@ -71,14 +76,24 @@ struct ChartPlacement {
 
 struct PackResult {
   std::vector<ChartPlacement> placements;  // parallel to the charts
-  std::vector<AtlasPage> pages;
+  std::vector<AtlasPage> pages;             // none when one page was asked for and is too small
   std::vector<uint32_t> downscaled_meshes;  // meshes shrunk to fit one page
+  // With PackGoal::OnePageOrNothing, when the charts did not fit: the share of their area (by
+  // bounding rectangle) that was placed before one did not, 0..1.
+  double placed_share = 1;
 };
 
-// Packs charts into pages of at most page_size texels, keeping all charts of one mesh on one page,
-// by Levy et al.'s "Tetris" packing of each chart's texel footprint against a horizon.
+enum class PackGoal {
+  AsManyPagesAsNeeded,  // a mesh too large for a page at this density is shrunk, and reported
+  OnePageOrNothing,     // stop as soon as it is clear that one page does not hold everything at this density
+};
+
+// Packs charts into pages of at most page_size texels, keeping all charts of one mesh on one page.
+// Each chart is rasterised to the texels it covers and goes, largest first, to the lowest, then
+// leftmost, spot where none of them comes closer than `padding` texels to another chart's: inside
+// a ring-shaped chart, under an overhang, anywhere there is room (uv/chart_packing.cpp).
 PackResult pack_charts(const std::vector<Chart>& charts, size_t mesh_count, float texel_density, int page_size,
-                       int padding, bool may_rotate, UnwrapProgress& progress);
+                       int padding, bool may_rotate, PackGoal goal, UnwrapProgress& progress);
 
 // Where corner k of chart triangle i lands in the page, in texels.
 Vec2 placed_corner(const Chart& chart, const ChartPlacement& at, size_t corner);
