@@ -174,6 +174,27 @@ void compute_radiosity(const Scene& scene, const Elements& elements, const Surfa
 
 }  // namespace
 
+BakeGeometry bake_geometry(const Scene& scene, const Atlas& atlas, const BakeOptions& options, const EffectPlan& plan,
+                           Progress& progress, std::vector<StageTime>& times) {
+  StageClock clock(times);
+  BakeGeometry g;
+  g.surface = clock.run("surface", [&] { return std::make_unique<Surface>(build_surface(scene, atlas)); });
+  g.materials = std::make_unique<MaterialSampler>(scene, *g.surface, options.emission_scale, options.glazing_transmittance);
+  g.tracer = clock.run("ray tracer", [&] { return std::make_unique<RayTracer>(*g.surface, g.materials.get()); });
+  ElementOptions element_options = options.elements;
+  if (plan.exhaustive) element_options.filter = FootprintFilter::Everywhere;
+  else if (!plan.texture_sampling) element_options.filter = FootprintFilter::BetweenMaterials;
+  g.elements = clock.run("elements", [&] { return build_elements(*g.surface, *g.materials, element_options, progress); });
+  clock.run("sample placement", [&] {
+    place_samples(g.elements, *g.surface, *g.tracer, options.seed, progress);
+    return 0;
+  });
+  check_elements(FiniteCheckContext{scene, *g.surface, g.elements});
+  if (std::none_of(g.elements.flags.begin(), g.elements.flags.end(), [](uint8_t f) { return !(f & kBuried); }))
+    throw InputError("no lightmap texel covers a visible surface: raise the texel density or the page size");
+  return g;
+}
+
 BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& options,
                 const ProgressCallback& on_progress, const PreviewCallback& on_preview) {
   PlanOptions plan = options.plan;
@@ -204,23 +225,13 @@ BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& optio
   BakeReport& report = result.report;
   StageClock clock(report.stage_times);
 
-  Surface surface = clock.run("surface", [&] { return build_surface(scene, atlas); });
-  MaterialSampler materials(scene, surface, options.emission_scale, options.glazing_transmittance);
-  auto tracer = clock.run("ray tracer", [&] { return std::make_unique<RayTracer>(surface, &materials); });
-  // Before the light, so a work plane that finds no floor fails at once.
+  BakeGeometry geometry = bake_geometry(scene, atlas, options, plan, progress, report.stage_times);
+  const Surface& surface = *geometry.surface;
+  const MaterialSampler& materials = *geometry.materials;
+  const std::unique_ptr<RayTracer>& tracer = geometry.tracer;
+  Elements& elements = geometry.elements;
   if (options.work_plane.enabled) result.work_plane = work_plane(scene, surface, *tracer, options.work_plane);
-  ElementOptions element_options = options.elements;
-  if (plan.exhaustive) element_options.filter = FootprintFilter::Everywhere;
-  else if (!plan.texture_sampling) element_options.filter = FootprintFilter::BetweenMaterials;
-  Elements elements = clock.run("elements", [&] { return build_elements(surface, materials, element_options, progress); });
-  clock.run("sample placement", [&] {
-    place_samples(elements, surface, *tracer, options.seed, progress);
-    return 0;
-  });
   const FiniteCheckContext checked{scene, surface, elements};
-  check_elements(checked);
-  if (std::none_of(elements.flags.begin(), elements.flags.end(), [](uint8_t f) { return !(f & kBuried); }))
-    throw InputError("no lightmap texel covers a visible surface: raise the texel density or the page size");
 
   const size_t n = elements.size();
   report.plan = plan.decisions;

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -13,13 +14,16 @@
 #include "baker/finish.h"
 #include "baker/gather_filter.h"
 #include "baker/interreflection.h"
+#include "baker/material_sampler.h"
 #include "baker/path_tracer.h"
 #include "baker/patches.h"
 #include "baker/plan.h"
 #include "baker/progress.h"
+#include "baker/ray_tracer.h"
 #include "baker/scene.h"
 #include "baker/sensor_points.h"
 #include "baker/sky_light.h"
+#include "baker/surface.h"
 #include "baker/solve_radiosity.h"
 #include "baker/surface_statistics.h"
 #include "baker/work_plane.h"
@@ -109,6 +113,20 @@ struct BakeResult {
   WorkPlane work_plane;                            // its sensor_at indexes `sensors`
   BakeReport report;
 };
+
+// What every stage needs before the light: the surface, its materials, the ray tracer and the
+// elements with their samples placed (held by pointer: the sampler and the tracer refer to the
+// surface).
+struct BakeGeometry {
+  std::unique_ptr<Surface> surface;
+  std::unique_ptr<MaterialSampler> materials;
+  std::unique_ptr<RayTracer> tracer;
+  Elements elements;
+};
+
+// Throws InputError when no texel covers a visible surface. Stage times go to `times`.
+BakeGeometry bake_geometry(const Scene& scene, const Atlas& atlas, const BakeOptions& options, const EffectPlan& plan,
+                           Progress& progress, std::vector<StageTime>& times);
 
 // The progressive estimate while the radiosity solve refines it: direct light at texel resolution
 // plus the patches' interreflection so far (no final gather), in the stored quantity, dilated.

@@ -97,11 +97,12 @@ Daylight daylight_sky(const DaylightOptions& o) {
                              : o.sky == SkyKind::CieOvercast ? SkyModel::CieOvercast
                                                              : SkyModel::CieGeneral;  // Perez: below
   light.distribution.cie_type = o.cie_type;
-  double sky_lux = o.sky_illuminance;
+  double sky_lux = o.sky_illuminance, perez_zenith_luminance = 0;
   if (o.sky == SkyKind::Perez) {
     const PerezSky weather = weather_sky(o, s.sun_zenith);
     light.distribution = weather.distribution;
     sky_lux = weather.diffuse_horizontal_illuminance;
+    perez_zenith_luminance = weather.zenith_luminance;  // the fit's quadrature, not done twice
     sun_lux = weather.direct_normal_illuminance;
     s.perez_clearness = weather.clearness;
     s.perez_brightness = weather.brightness;
@@ -117,7 +118,10 @@ Daylight daylight_sky(const DaylightOptions& o) {
   light.rays = o.sky_rays;
   light.sun_rays = o.sun_rays;
   light.zenith_luminance =
-      sky_lux / horizontal_illuminance_over_zenith_luminance(light.distribution, light.sun_zenith, light.sun_azimuth);
+      o.sky == SkyKind::Perez
+          ? perez_zenith_luminance
+          : sky_lux / horizontal_illuminance_over_zenith_luminance(light.distribution, light.sun_zenith, light.sun_azimuth);
+  light.sky_horizontal_illuminance = sky_lux;
   light.sun_illuminance = sun_lux;
 
   s.zenith_luminance = light.zenith_luminance;

@@ -26,6 +26,12 @@ struct SensorOptions {
   uint32_t rays = 1024;  // hemisphere rays per sensor for the light surfaces send; noise ~ 1/sqrt
 };
 
+// The valid elements sensor `index`'s `rays` cosine-distributed gather rays strike, one entry per
+// ray that strikes one (rays that leave the scene or strike a back face are not listed); the
+// surfaces' part of its illuminance is the sum of their exitances over `rays`.
+std::vector<int64_t> sensor_gather_hits(const Sensor& sensor, size_t index, const Elements& elements,
+                                        const Surface& surface, const RayTracer& tracer, uint32_t rays, uint64_t seed);
+
 // Per sensor, lux (the mean of R, G and B, as the energy balance counts light). `exitance` is per
 // element, lm/m2 (emission plus reflected light); `sky` may be disabled.
 std::vector<double> sensor_illuminance(const std::vector<Sensor>& sensors, const std::vector<Light>& lights,

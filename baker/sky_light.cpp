@@ -32,10 +32,11 @@ SkyView::SkyView(const SkyLight& sky) : sky_(sky), sun_(sun_direction(sky)) {
   up_ = c.up, north_ = c.north, east_ = c.east;
   orthonormal_basis(sun_, sun_t_, sun_b_);
   sun_up_ = sky.sun_illuminance > 0 && dot(sun_, up_) > 0;
-  ground_ = sky.ground_reflectance / M_PI *
-            (sky.zenith_luminance *
-                 horizontal_illuminance_over_zenith_luminance(sky.distribution, sky.sun_zenith, sky.sun_azimuth) +
-             (sun_up_ ? sky.sun_illuminance * dot(sun_, up_) : 0.0));
+  const double sky_lux = sky.sky_horizontal_illuminance > 0
+                            ? sky.sky_horizontal_illuminance
+                            : sky.zenith_luminance * horizontal_illuminance_over_zenith_luminance(
+                                                         sky.distribution, sky.sun_zenith, sky.sun_azimuth);
+  ground_ = sky.ground_reflectance / M_PI * (sky_lux + (sun_up_ ? sky.sun_illuminance * dot(sun_, up_) : 0.0));
 }
 
 double SkyView::luminance(Vec3 d) const {
@@ -67,12 +68,11 @@ struct SkyRays {
   // stratified u in the unit square (a point of a texel's footprint, or one point).
   template <class OriginOf>
   double lux(Vec3 n, Vec3 ng, const OriginOf& origin_of, Rng& rng) const {
-    const uint32_t origin_pattern = rng.next_u32(), direction_pattern = rng.next_u32();
-    const uint32_t sun_origin_pattern = rng.next_u32(), sun_disc_pattern = rng.next_u32();
+    const SkyRayPatterns pattern(rng);
     double luminance = 0;  // cd/m2, summed over the rays
     for (uint32_t k = 0; k < rays; ++k) {
-      const Vec3 origin = origin_of(cmj_sample(k, rays, origin_pattern));
-      const Vec3 d = hemisphere_direction(n, ng, cmj_sample(k, rays, direction_pattern));
+      const Vec3 origin = origin_of(cmj_sample(k, rays, pattern.origin));
+      const Vec3 d = hemisphere_direction(n, ng, cmj_sample(k, rays, pattern.direction));
       const float passes = tracer.transmittance(origin, d, 0.0f, INFINITY);
       if (passes > 0) luminance += passes * view.luminance(d);
     }
@@ -81,8 +81,8 @@ struct SkyRays {
     if (!view.sun_up()) return lux;
     double seen = 0;  // cos(incidence) over the disc's points that are not hidden
     for (uint32_t k = 0; k < sun_rays; ++k) {
-      const Vec3 origin = origin_of(cmj_sample(k, sun_rays, sun_origin_pattern));
-      const Vec3 d = view.toward_sun(cmj_sample(k, sun_rays, sun_disc_pattern));
+      const Vec3 origin = origin_of(cmj_sample(k, sun_rays, pattern.sun_origin));
+      const Vec3 d = view.toward_sun(cmj_sample(k, sun_rays, pattern.sun_disc));
       const float incidence = dot(n, d);
       if (incidence > 0 && dot(ng, d) > 0) seen += incidence * tracer.transmittance(origin, d, 0.0f, INFINITY);
     }

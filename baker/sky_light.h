@@ -14,6 +14,7 @@
 #include "baker/elements.h"
 #include "baker/progress.h"
 #include "baker/ray_tracer.h"
+#include "baker/sampling.h"
 #include "baker/sky_luminance.h"
 #include "baker/surface.h"
 
@@ -23,6 +24,9 @@ struct SkyLight {
   bool enabled = false;
   SkyDistribution distribution;
   double zenith_luminance = 0;           // cd/m2
+  // lux, the sky alone on an unobstructed horizontal plane, when known (daylight_sky sets it);
+  // 0: worked out from the distribution by quadrature when needed.
+  double sky_horizontal_illuminance = 0;
   double sun_zenith = 0, sun_azimuth = 0;  // radians; azimuth from north, eastward
   Vec3 up{0, 1, 0};                      // the scene's zenith (glTF: +Y)
   Vec3 north{0, 0, -1};                  // the scene's north, perpendicular to `up`
@@ -54,6 +58,20 @@ class SkyView {
   bool sun_up_ = false;
   double ground_ = 0;  // cd/m2
 };
+
+// The patterns of a point's sky rays and sun rays, drawn from its generator in the order the sky's
+// irradiance draws them: ray k of n leaves from origin_of(cmj_sample(k, n, origin)) along
+// hemisphere_direction(n, ng, cmj_sample(k, n, direction)); sun ray k toward
+// toward_sun(cmj_sample(k, n, sun_disc)). Daylight coefficients cast the very same rays.
+struct SkyRayPatterns {
+  uint32_t origin, direction, sun_origin, sun_disc;
+  explicit SkyRayPatterns(Rng& rng)
+      : origin(rng.next_u32()), direction(rng.next_u32()), sun_origin(rng.next_u32()), sun_disc(rng.next_u32()) {}
+};
+
+// Rays start a millionth of the scene off a sensor, so a sensor lying on a surface (a work plane
+// at height 0) does not see the surface it lies on.
+inline Vec3 sensor_origin(Vec3 position, Vec3 normal, float scene_extent) { return position + normal * (1e-6f * scene_extent); }
 
 // At points in the air (sensors) facing `normals`, lux; each point's rays all start at it.
 std::vector<double> sky_illuminance_at(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,

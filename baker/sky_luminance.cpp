@@ -92,16 +92,18 @@ double relative_sky_luminance(const SkyDistribution& sky, double zenith, double 
 double horizontal_illuminance_over_zenith_luminance(const SkyDistribution& sky, double sun_zenith,
                                                     double sun_azimuth) {
   // Midpoint rule in (Z, alpha) with the cos Z sin Z dZ dalpha measure: smooth integrands, and
-  // the circumsolar peak of the clear skies is spread over degrees, not arcminutes.
+  // the circumsolar peak of the clear skies is spread over degrees, not arcminutes. Every sky here
+  // is symmetric about the sun's vertical, so azimuths are taken from the sun's and each half
+  // ring counts twice.
   constexpr int kZenithSteps = 360, kAzimuthSteps = 720;
   const double dz = 0.5 * M_PI / kZenithSteps, da = 2 * M_PI / kAzimuthSteps;
   double sum = 0;
   for (int i = 0; i < kZenithSteps; ++i) {
     const double z = (i + 0.5) * dz;
     double ring = 0;
-    for (int j = 0; j < kAzimuthSteps; ++j)
-      ring += relative_sky_luminance(sky, z, (j + 0.5) * da, sun_zenith, sun_azimuth);
-    sum += ring * std::cos(z) * std::sin(z);
+    for (int j = 0; j < kAzimuthSteps / 2; ++j)
+      ring += relative_sky_luminance(sky, z, sun_azimuth + (j + 0.5) * da, sun_zenith, sun_azimuth);
+    sum += 2 * ring * std::cos(z) * std::sin(z);
   }
   return sum * dz * da;
 }

@@ -1,0 +1,48 @@
+// A year of daylight at sensors by daylight coefficients (Tregenza and Waters 1983; Reinhart and
+// Herkel 2000; what Radiance's rcontrib and dctimestep do). The interreflection is solved once per
+// sky patch, for the ground, and per sun bin, all over one set of patches and form factors; every
+// hour is then a weighted sum:
+//
+//   E(sensor, hour) = sum over fine patches q of D(q) L(q)       the sky the sensor sees itself
+//                   + sum over sky patches p of C(p) L(p)        the sky by way of the surfaces
+//                   + (D(ground) + C(ground)) L(ground)          the ground beyond the scene
+//                   + E_sun (direct at the sensor + C(sun bin))  the sun: its shadow rays per hour,
+//                                                                its reflections by the bin it is in
+//
+// D and the sensor's sun rays are the rays a single bake's sensor casts (same seed, same rays);
+// only their luminance is taken from patches. C comes from the patch-level solve: each surface a
+// sensor's gather ray strikes sends rho (direct + what its patch gathers).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "baker/bake.h"
+#include "baker/sky_light.h"
+
+namespace radbake {
+
+struct AnnualDaylightOptions {
+  int sky_subdivision = 1;     // sky patches for the light surfaces pass on: 1 = Tregenza's 145, m: Reinhart MF:m
+  int direct_subdivision = 4;  // patches for the sky a sensor sees directly (4: 2305 patches of about 3 degrees)
+  int sun_subdivision = 4;     // sun bins (Reinhart MF:m patches the year's suns fall in)
+  uint32_t bin_sun_rays = 4;   // per texel per sun bin, toward the bin's centre
+};
+
+struct AnnualDaylight {
+  size_t sensors = 0, hours = 0;
+  std::vector<float> lux;       // [hour * sensors + sensor], lux
+  std::vector<float> sun_lux;   // the same, the sun's direct light alone (for annual sun exposure)
+  size_t sky_patches = 0;       // solved, the ground included
+  size_t sun_bins = 0;          // solved
+  double coefficient_seconds = 0, hours_seconds = 0;
+};
+
+// Illuminance at `sensors` for every one of `hours` (each a SkyLight: its sky, sun and ground;
+// `enabled` false for a dark hour). The scene's geometry, materials, patches and form factors come
+// from `options` as for a bake; its lamps are left out. Throws InputError as a bake does.
+AnnualDaylight annual_daylight(const Scene& scene, const Atlas& atlas, const BakeOptions& options,
+                               const std::vector<Sensor>& sensors, const std::vector<SkyLight>& hours,
+                               const AnnualDaylightOptions& annual, const ProgressCallback& on_progress = {});
+
+}  // namespace radbake
