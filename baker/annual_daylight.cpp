@@ -96,8 +96,8 @@ double direct_sun(const Sensor& s, size_t index, const SkyView& view, const Surf
 }  // namespace
 
 AnnualDaylight annual_daylight(const Scene& scene, const Atlas& atlas, const BakeOptions& options,
-                               const std::vector<Sensor>& sensors, const std::vector<SkyLight>& hours,
-                               const AnnualDaylightOptions& annual, const ProgressCallback& on_progress) {
+                               const std::vector<SkyLight>& hours, const AnnualDaylightOptions& annual,
+                               const ProgressCallback& on_progress) {
   const auto started = std::chrono::steady_clock::now();
   Progress progress(on_progress);
   PlanOptions plan_options = options.plan;
@@ -107,6 +107,15 @@ AnnualDaylight annual_daylight(const Scene& scene, const Atlas& atlas, const Bak
   const Surface& surface = *geometry.surface;
   const RayTracer& tracer = *geometry.tracer;
   const Elements& e = geometry.elements;
+  AnnualDaylight out;
+  out.sensors = options.sensors;
+  if (options.work_plane.enabled) {
+    out.work_plane = work_plane(scene, surface, tracer, options.work_plane);
+    for (int32_t& k : out.work_plane.sensor_at)
+      if (k >= 0) k += int32_t(options.sensors.size());
+    out.sensors.insert(out.sensors.end(), out.work_plane.sensors.begin(), out.work_plane.sensors.end());
+  }
+  const std::vector<Sensor>& sensors = out.sensors;
   const Compass compass(options.sky);
   const SkyPatches sky(annual.sky_subdivision), fine(annual.direct_subdivision), sun_bins(annual.sun_subdivision);
   const uint64_t seed = options.seed;
@@ -223,8 +232,7 @@ AnnualDaylight annual_daylight(const Scene& scene, const Atlas& atlas, const Bak
   });
   progress.end();
 
-  AnnualDaylight out;
-  out.sensors = sensors.size(), out.hours = hours.size();
+  out.hours = hours.size();
   out.sky_patches = bins, out.sun_bins = sun_bin_list.size();
   out.coefficient_seconds = seconds_since(started);
   const auto hours_started = std::chrono::steady_clock::now();

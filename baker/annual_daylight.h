@@ -30,7 +30,9 @@ struct AnnualDaylightOptions {
 };
 
 struct AnnualDaylight {
-  size_t sensors = 0, hours = 0;
+  std::vector<Sensor> sensors;  // BakeOptions::sensors, then the work plane's
+  WorkPlane work_plane;         // its sensor_at indexes `sensors`
+  size_t hours = 0;
   std::vector<float> lux;       // [hour * sensors + sensor], lux
   std::vector<float> sun_lux;   // the same, the sun's direct light alone (for annual sun exposure)
   size_t sky_patches = 0;       // solved, the ground included
@@ -38,11 +40,13 @@ struct AnnualDaylight {
   double coefficient_seconds = 0, hours_seconds = 0;
 };
 
-// Illuminance at `sensors` for every one of `hours` (each a SkyLight: its sky, sun and ground;
-// `enabled` false for a dark hour). The scene's geometry, materials, patches and form factors come
-// from `options` as for a bake; its lamps are left out. Throws InputError as a bake does.
+// Illuminance at options.sensors and, when asked, a work plane's (options.work_plane) for every one
+// of `hours` (each a SkyLight: its sky, sun and ground; `enabled` false for a dark hour). The
+// scene's geometry, materials, patches and form factors come from `options` as for a bake, and
+// the rays and the compass from options.sky; its lamps are left out. Throws InputError as a bake
+// does.
 AnnualDaylight annual_daylight(const Scene& scene, const Atlas& atlas, const BakeOptions& options,
-                               const std::vector<Sensor>& sensors, const std::vector<SkyLight>& hours,
-                               const AnnualDaylightOptions& annual, const ProgressCallback& on_progress = {});
+                               const std::vector<SkyLight>& hours, const AnnualDaylightOptions& annual,
+                               const ProgressCallback& on_progress = {});
 
 }  // namespace radbake

@@ -7,7 +7,7 @@
 
 namespace radbake {
 
-AnnualSkies annual_skies(const Weather& weather, Vec3 up, Vec3 north, double ground_reflectance) {
+AnnualSkies annual_skies(const Weather& weather, const DaylightOptions& base) {
   AnnualSkies out;
   out.hours.resize(weather.hours.size());
   const int year = weather.hours.size() == 8784 ? 2024 : 2025;  // a leap year when the file has one
@@ -20,20 +20,22 @@ AnnualSkies annual_skies(const Weather& weather, Vec3 up, Vec3 north, double gro
     site.year = year, site.month = w.month, site.day = w.day;
     site.hour = w.hour - 1, site.minute = 30;  // EPW's hour h ends at h:00
     if (!(sun_position(site).zenith < 90) || !(w.diffuse_horizontal > 0)) return;
-    DaylightOptions o;
+    DaylightOptions o = base;
     o.sky = SkyKind::Perez;
+    o.sun.reset();
+    o.sun_illuminance.reset();
     o.site = site;
     o.direct_normal_irradiance = w.direct_normal, o.diffuse_horizontal_irradiance = w.diffuse_horizontal;
     if (std::isfinite(w.dew_point)) o.dew_point = w.dew_point;
-    o.up = up, o.north = north, o.ground_reflectance = ground_reflectance;
+    else o.dew_point.reset();
     daylit[k] = 1;
     try {
       out.hours[k] = daylight_sky(o).light;
     } catch (const InputError&) {
-      DaylightOptions overcast;
+      DaylightOptions overcast = base;
       overcast.sky = SkyKind::CieOvercast;
       overcast.sky_illuminance = 120 * w.diffuse_horizontal;
-      overcast.up = up, overcast.north = north, overcast.ground_reflectance = ground_reflectance;
+      overcast.site.reset(), overcast.sun.reset(), overcast.sun_illuminance.reset();
       out.hours[k] = daylight_sky(overcast).light;
       substituted[k] = 1;
     }

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "baker/daylight.h"
 #include "baker/sky_light.h"
 #include "baker/weather.h"
 
@@ -18,6 +19,7 @@ struct AnnualSkies {
   size_t substituted = 0;
 };
 
-AnnualSkies annual_skies(const Weather& weather, Vec3 up, Vec3 north, double ground_reflectance);
+// `base` gives the compass (up, north), the ground's reflectance and the rays; its sky is ignored.
+AnnualSkies annual_skies(const Weather& weather, const DaylightOptions& base);
 
 }  // namespace radbake

@@ -264,6 +264,15 @@ analysis options (bake): illuminance where there is no surface, and images to re
                           the value at the top of the false-colour scales (default auto: the 99th
                           percentile, rounded up to 1, 2, 2.5 or 5 x 10^k)
 
+annual options (bake): a year of daylight at the sensors by daylight coefficients (docs/annual.md)
+  --weather FILE.epw      an EnergyPlus weather file: its site and every hour's Perez sky and sun
+                          (samples/weather has synthetic years); needs --sensors or --work-plane,
+                          takes no --sky or site. Writes annual_illuminance.f32 (float32, hour by
+                          hour, sensor by sensor), annual_sensors.csv (DA, UDI bins, sun hours),
+                          work-plane maps and, in report.json, sDA300/50%, ASE1000/250h, UDI
+  --occupied FROM-TO      occupied hours, local standard time (default 8-18, IES LM-83)
+  --da-threshold LUX      daylight autonomy's illuminance (default 300)
+
 view options: a page on 127.0.0.1 showing OUTDIR's bake in three.js (and OUTDIR_B's beside it);
 it serves the page, three.js and the two folders' files, nothing else
   --port N                the port (default: a free one; the address is printed)
@@ -356,6 +365,7 @@ std::vector<double> parse_numbers(const std::string& option, const std::string& 
 struct SiteInput {
   bool latitude = false, longitude = false, date = false, time = false, utc_offset = false;
   SiteAndTime site;
+  bool given() const { return latitude || longitude || date || time || utc_offset; }
 };
 
 void daylight_options(DaylightOptions& d, SiteInput& in, std::map<std::string, Setter>& with_value) {
@@ -623,6 +633,15 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
          b.bake.patches.block_size = int(size);
        }},
       {"--sensors", [&](const std::string& v) { b.sensor_file = v; }},
+      {"--weather", [&](const std::string& v) { b.weather_file = v; }},
+      {"--occupied", [&](const std::string& v) {
+         const size_t dash = v.find('-');
+         if (dash == std::string::npos) throw UsageError("option --occupied must be FROM-TO in hours, as 8-18" + got(v));
+         b.occupied_from = int(parse_integer("--occupied", v.substr(0, dash), 0, 23));
+         b.occupied_to = int(parse_integer("--occupied", v.substr(dash + 1), 1, 24));
+         if (b.occupied_to <= b.occupied_from) throw UsageError("option --occupied must end after it starts" + got(v));
+       }},
+      {"--da-threshold", [&](const std::string& v) { b.metrics.da_threshold = parse_number("--da-threshold", v, 1, 1e6); }},
       {"--sensor-rays", [&](const std::string& v) { b.bake.sensor.rays = uint32_t(parse_integer("--sensor-rays", v, 1, 1 << 24)); }},
       {"--work-plane-height", [&](const std::string& v) {
          b.bake.work_plane.height = parse_number("--work-plane-height", v, 0, 1000);
@@ -701,6 +720,14 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
   if (b.output.empty()) throw UsageError("missing -o OUTDIR");
   if (b.bake.plan.direct_only && b.bake.plan.simulate_everything)
     throw UsageError("--direct-only and --simulate-everything contradict each other");
+  if (!b.weather_file.empty()) {
+    if (b.daylight.sky != SkyKind::None) throw UsageError("--weather gives every hour its sky: leave out --sky");
+    if (site.given()) throw UsageError("--weather gives the site: leave out --latitude, --longitude, --date and --time");
+    if (b.sensor_file.empty() && !b.bake.work_plane.enabled)
+      throw UsageError("--weather needs --sensors or --work-plane: the year's results are per sensor");
+    if (b.bake.method != Method::Radiosity) throw UsageError("--weather needs --method radiosity");
+    if (b.daylight_factor) throw UsageError("--daylight-factor is for one overcast sky, not a year of weather");
+  }
   finish_site(b.daylight, site);
   if (b.daylight_factor && b.bake.store != StoredQuantity::Irradiance)
     throw UsageError("--daylight-factor needs --store irradiance: it is the ratio of illuminances");
@@ -752,6 +779,9 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
       {"work-plane-height", number(b.bake.work_plane.height)},
       {"work-plane-spacing", number(b.bake.work_plane.spacing)},
       {"daylight-factor", b.daylight_factor ? "yes" : "no"},
+      {"weather", b.weather_file.empty() ? "none" : b.weather_file},
+      {"occupied", number(b.occupied_from) + "-" + number(b.occupied_to)},
+      {"da-threshold", number(b.metrics.da_threshold)},
       {"false-colour", !b.analysis.false_colour_pages ? "none" : b.analysis.scale.logarithmic ? "log" : "linear"},
       {"false-colour-max", b.analysis.scale.max > 0 ? number(b.analysis.scale.max) : "auto"},
       {"glazing-transmittance", b.bake.glazing_transmittance >= 0 ? number(b.bake.glazing_transmittance) : "clear pane"},

@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "baker/annual_metrics.h"
 #include "baker/bake.h"
 #include "baker/daylight.h"
 #include "baker/exposure.h"
@@ -37,6 +38,10 @@ struct BakeCommand {
   std::string sensor_file;   // CSV of points to measure at; empty: none
   bool daylight_factor = false;
   AnalysisOptions analysis;
+  // A year of daylight (--weather): daylight coefficients at the sensors for every hour of the file.
+  std::string weather_file;
+  int occupied_from = 8, occupied_to = 18;  // occupied hours, local standard time: from FROM:00 to TO:00
+  AnnualMetricsOptions metrics;
   float png_scale = 0;  // 0: automatic
   DisplayMode display = DisplayMode::Page;
   int display_detail = 0;      // pre-lit texels per lightmap texel along a side (1, 2, 4); 0: automatic

@@ -16,6 +16,8 @@
 #include "cli/interrupts.h"
 #include "cli/progress_display.h"
 #include "io/analysis_outputs.h"
+#include "io/annual_outputs.h"
+#include "io/epw_reader.h"
 #include "io/debug_dumps.h"
 #include "io/display_gltf.h"
 #include "io/gltf.h"
@@ -120,8 +122,59 @@ void print_readings(const char* what, const radbake::ReadingSummary& lux, const 
   std::fprintf(stderr, "\n");
 }
 
+// `radbake bake --weather`: a year of daylight at the sensors, by daylight coefficients.
+int run_annual(const radbake::BakeCommand& cmd) {
+  using namespace radbake;
+  const auto start = std::chrono::steady_clock::now();
+  LoadedScene loaded = load_gltf(cmd.input, cmd.load);
+  check_bake_budget(loaded, cmd.atlas, cmd.load, cmd.input);
+  add_back_faces(loaded.scene);
+  const Weather weather = read_epw(cmd.weather_file);
+  stop_if_interrupted();
+  BakeOptions options = cmd.bake;
+  if (!cmd.sensor_file.empty()) options.sensors = read_sensor_csv(cmd.sensor_file);
+  const AnnualSkies skies = annual_skies(weather, cmd.daylight);
+  if (skies.daylit == 0) throw InputError("weather file " + cmd.weather_file + " has no hour with daylight");
+  for (const SkyLight& hour : skies.hours)
+    if (hour.enabled) {
+      options.sky = hour;  // the compass and the rays every hour shares
+      break;
+    }
+  StagedFolder folder(cmd.output);
+  AbandonOnInterrupt abandon_on_interrupt(folder);
+  ProgressDisplay display(!cmd.quiet);
+  const ProgressCallback progress = [&](const std::string& stage, double fraction) {
+    display.update(stage, fraction);
+    return !interrupted();
+  };
+  AtlasOptions atlas_options = cmd.atlas;
+  atlas_options.progress = progress;
+  const Atlas atlas = ensure_lightmap_uvs(mesh_views(loaded.scene), atlas_options);
+  const AnnualDaylight annual = annual_daylight(loaded.scene, atlas, options, skies.hours, AnnualDaylightOptions{}, progress);
+  display.finish();
+  std::vector<bool> occupied(weather.hours.size());
+  for (size_t h = 0; h < occupied.size(); ++h)  // EPW's hour h ends at h:00
+    occupied[h] = weather.hours[h].hour > cmd.occupied_from && weather.hours[h].hour <= cmd.occupied_to;
+  const AnnualMetrics metrics = annual_metrics(annual.lux, annual.sun_lux, annual.sensors.size(), occupied, cmd.metrics);
+  AnnualRun run;
+  run.input = cmd.input, run.weather_file = cmd.weather_file, run.options = cmd.effective;
+  run.weather = &weather, run.skies = &skies, run.daylight = &annual, run.metrics = &metrics;
+  run.metric_options = &cmd.metrics, run.occupied_from = cmd.occupied_from, run.occupied_to = cmd.occupied_to;
+  run.total_seconds = seconds_since(start);
+  run.peak_memory_bytes = peak_memory_bytes();
+  stop_if_interrupted();
+  write_annual(run, folder.path());
+  folder.commit();
+  std::printf("radbake: wrote %s: a year of %s weather at %zu sensors: sDA300/50%% %.1f%%, ASE1000/250h %.1f%%, "
+              "mean DA %.1f%% (%zu occupied hours, %.1f s)\n",
+              cmd.output.c_str(), weather.place.c_str(), annual.sensors.size(), 100 * metrics.sda, 100 * metrics.ase,
+              100 * metrics.mean_daylight_autonomy, metrics.occupied_hours, run.total_seconds);
+  return 0;
+}
+
 int run_bake(const radbake::BakeCommand& cmd) {
   using namespace radbake;
+  if (!cmd.weather_file.empty()) return run_annual(cmd);
   const auto start = std::chrono::steady_clock::now();
   RunInfo run;
   run.input = cmd.input;

@@ -13,14 +13,6 @@
 namespace radbake {
 namespace {
 
-// The work plane's grid of `values` (per sensor), NaN where no floor is under a point.
-std::vector<float> grid_of(const WorkPlane& plane, const std::vector<double>& values) {
-  std::vector<float> grid(plane.sensor_at.size(), std::numeric_limits<float>::quiet_NaN());
-  for (size_t k = 0; k < grid.size(); ++k)
-    if (plane.sensor_at[k] >= 0) grid[k] = float(values[size_t(plane.sensor_at[k])]);
-  return grid;
-}
-
 void write_false_colour(const std::string& path, const std::vector<float>& values, int width, int height,
                         const FalseColourScale& scale, int cell_pixels) {
   const FalseColourResult image = false_colour(values, width, height, scale, cell_pixels);
@@ -37,6 +29,16 @@ std::vector<float> page_values(const LightmapPage& page, double factor) {
 }
 
 }  // namespace
+
+void write_work_plane_map(const std::string& path, const WorkPlane& plane, const std::vector<double>& values,
+                          const FalseColourScale& scale) {
+  std::vector<float> grid(plane.sensor_at.size(), std::numeric_limits<float>::quiet_NaN());
+  for (size_t k = 0; k < grid.size(); ++k)
+    if (plane.sensor_at[k] >= 0) grid[k] = float(values[size_t(plane.sensor_at[k])]);
+  // Cells large enough that a small room's grid reads at a glance (about 480 pixels across).
+  const int cell = std::clamp(480 / std::max(plane.columns, plane.rows), 2, 64);
+  write_false_colour(path, grid, plane.columns, plane.rows, scale, cell);
+}
 
 ReadingSummary summarise(const std::vector<double>& values) {
   ReadingSummary s;
@@ -129,11 +131,9 @@ AnalysisFiles write_analysis(const BakeResult& result, const std::string& folder
     for (int32_t k : plane.sensor_at)
       if (k >= 0) readings.push_back(lux[size_t(k)]);
     out.work_plane = summarise(readings);
-    // Cells large enough that a small room's grid reads at a glance (about 480 pixels across).
-    const int cell = std::clamp(480 / std::max(plane.columns, plane.rows), 2, 64);
     FalseColourScale scale = options.scale;
     scale.unit = "lx";
-    write_false_colour(folder + "/work_plane.png", grid_of(plane, lux), plane.columns, plane.rows, scale, cell);
+    write_work_plane_map(folder + "/work_plane.png", plane, lux, scale);
     out.files.push_back("work_plane.png");
     if (to_percent > 0) {
       std::vector<double> percent(lux);
@@ -141,8 +141,7 @@ AnalysisFiles write_analysis(const BakeResult& result, const std::string& folder
       for (double& v : readings) v *= to_percent;
       out.work_plane_daylight_factor = summarise(readings);
       scale.unit = "%";
-      write_false_colour(folder + "/work_plane_daylight_factor.png", grid_of(plane, percent), plane.columns,
-                         plane.rows, scale, cell);
+      write_work_plane_map(folder + "/work_plane_daylight_factor.png", plane, percent, scale);
       out.files.push_back("work_plane_daylight_factor.png");
     }
   }

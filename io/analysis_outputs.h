@@ -39,6 +39,11 @@ struct AnalysisFiles {
 // skipped. Throws InputError naming the file and line for anything else, and beyond max_points.
 std::vector<Sensor> read_sensor_csv(const std::string& path, size_t max_points = 1000000);
 
+// The work plane seen from above (-Z up, +X right) in false colour with a legend: `values` per
+// sensor, indexed as plane.sensor_at indexes them; cells where no floor is under a point are grey.
+void write_work_plane_map(const std::string& path, const WorkPlane& plane, const std::vector<double>& values,
+                          const FalseColourScale& scale);
+
 // Writes into `folder`: sensors.csv (every sensor: position, normal, lux, and the daylight factor
 // in percent when asked), work_plane.png (and work_plane_daylight_factor.png) seen from above
 // with -Z up and +X right, NAME_false_colour_N.png and NAME_daylight_factor_N.png per page.

@@ -35,12 +35,12 @@ TEST(AnnualDaylight, CoefficientsMatchSingleHourBakesAtEverySensor) {
     for (float z : {1.2f, 3.5f, 6.2f}) sensors.push_back({{x, 0.8f, z}, {0, 1, 0}});
   BakeOptions options;
   options.sky = hours[0];
-  const AnnualDaylight annual = annual_daylight(scene, atlas, options, sensors, hours, AnnualDaylightOptions{});
+  options.sensors = sensors;
+  const AnnualDaylight annual = annual_daylight(scene, atlas, options, hours, AnnualDaylightOptions{});
   ASSERT_EQ(annual.lux.size(), hours.size() * sensors.size());
   for (size_t h = 0; h < hours.size(); ++h) {
     BakeOptions single = options;
     single.sky = hours[h];
-    single.sensors = sensors;
     const BakeResult single_bake = bake(scene, atlas, single);
     for (size_t s = 0; s < sensors.size(); ++s) {
       const double reference = single_bake.sensor_lux[s], coefficients = annual.lux[h * sensors.size() + s];

@@ -1,0 +1,85 @@
+// A year of daylight from the command line (issue 17): `radbake bake --weather` on the classroom
+// writes the hourly series, each sensor's metrics and a report that agree with each other.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "support/commands.h"
+#include "support/scene_builders.h"
+
+namespace radbake {
+namespace {
+
+const std::string kClassroom = "samples/classroom/classroom.gltf", kLondon = "samples/weather/london_synthetic.epw";
+
+TEST(AnnualCli, AYearAtThreeSensorsWritesTheSeriesTheMetricsAndTheReport) {
+  const std::string folder = test::fresh_folder("annual_cli");
+  // On the middle window's axis: 1 m from the glass, mid-room, 1 m from the back wall.
+  const std::string sensors = test::write_text_file("annual_sensors_in.csv", "4.5,0.8,6.0\n4.5,0.8,3.5\n4.5,0.8,1.0\n");
+  const test::Outcome r = test::radbake("bake " + test::source_path(kClassroom) + " -o " + folder + "/out --weather " +
+                                        test::source_path(kLondon) + " --sensors " + sensors +
+                                        " --quiet --texels 8000 --sky-rays 64 --sun-rays 8 --sensor-rays 256");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("sDA300/50%"), std::string::npos) << r.out;
+
+  const std::string series = test::slurp(folder + "/out/annual_illuminance.f32");
+  ASSERT_EQ(series.size(), 8760u * 3 * sizeof(float));
+  auto lux = [&](size_t hour, size_t sensor) {
+    float v;
+    std::memcpy(&v, series.data() + (hour * 3 + sensor) * sizeof(float), sizeof v);
+    return v;
+  };
+  for (size_t s = 0; s < 3; ++s) EXPECT_EQ(lux(0, s), 0.0f) << "midnight, 1 January";
+  const size_t noon_july_3 = (31 + 28 + 31 + 30 + 31 + 30 + 2) * 24 + 11;
+  EXPECT_GT(lux(noon_july_3, 2), 50.0f);
+  EXPECT_GT(lux(noon_july_3, 0), lux(noon_july_3, 1));  // nearer the window, more light
+  EXPECT_GT(lux(noon_july_3, 1), lux(noon_july_3, 2));
+
+  // Each sensor's metrics, and the report's spatial ones made from them.
+  std::istringstream csv(test::slurp(folder + "/out/annual_sensors.csv"));
+  std::string line;
+  std::getline(csv, line);
+  EXPECT_EQ(line.rfind("x,y,z,nx,ny,nz,daylight_autonomy_percent,", 0), 0u) << line;
+  size_t rows = 0, autonomous = 0, sunny = 0;
+  std::vector<double> da;
+  while (std::getline(csv, line)) {
+    std::vector<double> f;
+    std::stringstream fields(line);
+    for (std::string x; std::getline(fields, x, ',');) f.push_back(std::stod(x));
+    ASSERT_EQ(f.size(), 13u) << line;
+    ++rows;
+    da.push_back(f[6]);
+    autonomous += f[6] >= 50;
+    sunny += f[12] > 250;
+    EXPECT_NEAR(f[7] + f[8] + f[9] + f[10], 100, 0.05) << "the UDI bins cover every hour; 0.05 bounds the printed rounding";
+  }
+  ASSERT_EQ(rows, 3u);
+  EXPECT_GT(da[0], da[2]) << "daylight autonomy falls away from the window";
+  const nlohmann::json report = nlohmann::json::parse(test::slurp(folder + "/out/report.json"));
+  EXPECT_EQ(report["weather"]["hours"], 8760);
+  EXPECT_EQ(report["series"]["sensors"], 3);
+  EXPECT_EQ(report["metrics"]["occupied_hours"], 3650);
+  EXPECT_NEAR(report["metrics"]["sDA_percent"].get<double>(), 100.0 * double(autonomous) / 3, 1e-9);
+  EXPECT_NEAR(report["metrics"]["ASE_percent"].get<double>(), 100.0 * double(sunny) / 3, 1e-9);
+}
+
+TEST(AnnualCli, WhatAYearCannotBeRunWithIsOneLine) {
+  const std::string folder = test::fresh_folder("annual_cli_refusals"), out = folder + "/out";
+  const std::string scene = test::source_path(kClassroom), weather = " --weather " + test::source_path(kLondon);
+  test::expect_one_line_refusal(test::radbake("bake " + scene + " -o " + out + weather),
+                                "--weather needs --sensors or --work-plane", out);
+  test::expect_one_line_refusal(test::radbake("bake " + scene + " -o " + out + weather + " --work-plane --sky cie-overcast"),
+                                "leave out --sky", out);
+  test::expect_one_line_refusal(test::radbake("bake " + scene + " -o " + out + weather + " --work-plane --latitude 40"),
+                                "--weather gives the site", out);
+  test::expect_one_line_refusal(test::radbake("bake " + scene + " -o " + out + weather + " --work-plane --occupied 18-8"),
+                                "--occupied must end after it starts", out);
+  test::expect_one_line_refusal(test::radbake("bake " + scene + " -o " + out + " --work-plane --weather " + folder + "/none.epw"),
+                                "cannot read weather file", out);
+}
+
+}  // namespace
+}  // namespace radbake
