@@ -122,6 +122,19 @@ void print_readings(const char* what, const radbake::ReadingSummary& lux, const 
   std::fprintf(stderr, "\n");
 }
 
+// A bake's output folder, staged until committed and abandoned on an interrupt, and its progress
+// shown on stderr, where the callback also asks whether to stop.
+struct OutputSession {
+  radbake::StagedFolder folder;
+  radbake::AbandonOnInterrupt abandon_on_interrupt{folder};
+  radbake::ProgressDisplay display;
+  radbake::ProgressCallback progress = [this](const std::string& stage, double fraction) {
+    display.update(stage, fraction);
+    return !radbake::interrupted();
+  };
+  OutputSession(const std::string& output, bool quiet) : folder(output), display(!quiet) {}
+};
+
 // `radbake bake --weather`: a year of daylight at the sensors, by daylight coefficients.
 int run_annual(const radbake::BakeCommand& cmd) {
   using namespace radbake;
@@ -140,13 +153,10 @@ int run_annual(const radbake::BakeCommand& cmd) {
       options.sky = hour;  // the compass and the rays every hour shares
       break;
     }
-  StagedFolder folder(cmd.output);
-  AbandonOnInterrupt abandon_on_interrupt(folder);
-  ProgressDisplay display(!cmd.quiet);
-  const ProgressCallback progress = [&](const std::string& stage, double fraction) {
-    display.update(stage, fraction);
-    return !interrupted();
-  };
+  OutputSession session(cmd.output, cmd.quiet);
+  StagedFolder& folder = session.folder;
+  ProgressDisplay& display = session.display;
+  const ProgressCallback& progress = session.progress;
   AtlasOptions atlas_options = cmd.atlas;
   atlas_options.progress = progress;
   const Atlas atlas = ensure_lightmap_uvs(mesh_views(loaded.scene), atlas_options);
@@ -200,14 +210,10 @@ int run_bake(const radbake::BakeCommand& cmd) {
   if (!cmd.quiet)
     for (const PlanDecision& d : plan.decisions)
       std::fprintf(stderr, "radbake: plan: %s: %s (%s)\n", d.effect.c_str(), d.choice.c_str(), d.reason.c_str());
-  StagedFolder folder(cmd.output);
-  AbandonOnInterrupt abandon_on_interrupt(folder);
-
-  ProgressDisplay display(!cmd.quiet);
-  const ProgressCallback progress = [&](const std::string& stage, double fraction) {
-    display.update(stage, fraction);
-    return !interrupted();
-  };
+  OutputSession session(cmd.output, cmd.quiet);
+  StagedFolder& folder = session.folder;
+  ProgressDisplay& display = session.display;
+  const ProgressCallback& progress = session.progress;
   t = std::chrono::steady_clock::now();
   AtlasOptions atlas_options = cmd.atlas;
   atlas_options.progress = progress;
