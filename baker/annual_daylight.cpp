@@ -93,6 +93,19 @@ double direct_sun(const Sensor& s, size_t index, const SkyView& view, const Surf
   return seen / sun_rays;
 }
 
+// The share of the sun's disc an eye sees: in front of it, through what lies between.
+double sun_seen(const Sensor& eye, const SkyView& view, const Surface& surface, const RayTracer& tracer,
+                uint32_t sun_rays, uint64_t seed) {
+  if (!(dot(sun_direction(view.sky()), eye.normal) > 0)) return 0;
+  const Vec3 origin = sensor_origin(eye.position, eye.normal, surface.scene_extent);
+  Rng rng(seed, Stream::View, uint64_t(-2));
+  const uint32_t pattern = rng.next_u32();
+  double seen = 0;
+  for (uint32_t k = 0; k < sun_rays; ++k)
+    seen += tracer.transmittance(origin, view.toward_sun(cmj_sample(k, sun_rays, pattern)), 0.0f, INFINITY);
+  return seen / sun_rays;
+}
+
 }  // namespace
 
 AnnualDaylight annual_daylight(const Scene& scene, const Atlas& atlas, const BakeOptions& options,
@@ -115,7 +128,10 @@ AnnualDaylight annual_daylight(const Scene& scene, const Atlas& atlas, const Bak
       if (k >= 0) k += int32_t(options.sensors.size());
     out.sensors.insert(out.sensors.end(), out.work_plane.sensors.begin(), out.work_plane.sensors.end());
   }
-  const std::vector<Sensor>& sensors = out.sensors;
+  // The eyes of BakeOptions::views are sensors facing where they look, split off at the end.
+  std::vector<Sensor> sensors = out.sensors;
+  for (const EyeView& eye : options.views) sensors.push_back({eye.position, normalize(eye.direction)});
+  out.eyes = options.views.size();
   const Compass compass(options.sky);
   const SkyPatches sky(annual.sky_subdivision), fine(annual.direct_subdivision), sun_bins(annual.sun_subdivision);
   const uint64_t seed = options.seed;
@@ -243,6 +259,7 @@ AnnualDaylight annual_daylight(const Scene& scene, const Atlas& atlas, const Bak
     for (auto [q, w] : d.patches) fine_used[q] = 1;
   out.lux.assign(hours.size() * sensors.size(), 0.0f);
   out.sun_lux.assign(hours.size() * sensors.size(), 0.0f);
+  out.eye_sun_seen.assign(hours.size() * out.eyes, 0.0f);
   progress.begin("hours", hours.size());
   tbb::parallel_for(tbb::blocked_range<size_t>(0, hours.size(), 8), [&](const tbb::blocked_range<size_t>& r) {
     std::vector<double> fine_luminance(fine.size()), coarse(bins);
@@ -273,10 +290,25 @@ AnnualDaylight annual_daylight(const Scene& scene, const Atlas& atlas, const Bak
         }
         out.lux[h * sensors.size() + s] = float(lux);
       }
+      for (size_t k = 0; k < out.eyes && sun > 0; ++k)
+        out.eye_sun_seen[h * out.eyes + k] = float(sun_seen(sensors[sensors.size() - out.eyes + k], view, surface, tracer, sun_rays, seed));
     }
     progress.advance(r.size());
   });
   progress.end();
+  // The eyes' columns out of the sensors' series.
+  const size_t listed = out.sensors.size();
+  if (out.eyes > 0) {
+    std::vector<float> lux, sun_lux;
+    out.eye_lux.resize(hours.size() * out.eyes);
+    for (size_t h = 0; h < hours.size(); ++h) {
+      const float* row = &out.lux[h * sensors.size()];
+      lux.insert(lux.end(), row, row + listed);
+      sun_lux.insert(sun_lux.end(), &out.sun_lux[h * sensors.size()], &out.sun_lux[h * sensors.size()] + listed);
+      std::copy(row + listed, row + sensors.size(), &out.eye_lux[h * out.eyes]);
+    }
+    out.lux = std::move(lux), out.sun_lux = std::move(sun_lux);
+  }
   out.hours_seconds = seconds_since(hours_started);
   return out;
 }

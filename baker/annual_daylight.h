@@ -35,6 +35,10 @@ struct AnnualDaylight {
   size_t hours = 0;
   std::vector<float> lux;       // [hour * sensors + sensor], lux
   std::vector<float> sun_lux;   // the same, the sun's direct light alone (for annual sun exposure)
+  // Per BakeOptions::views eye, [hour * eyes + eye]: the vertical illuminance at the eye facing
+  // where it looks, and the share of the sun's disc it sees (0 when the sun is behind it or down).
+  size_t eyes = 0;
+  std::vector<float> eye_lux, eye_sun_seen;
   size_t sky_patches = 0;       // solved, the ground included
   size_t sun_bins = 0;          // solved
   double coefficient_seconds = 0, hours_seconds = 0;

@@ -274,6 +274,16 @@ BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& optio
                                 options.sensor, options.seed, progress);
     });
   }
+  if (!options.views.empty()) {
+    const std::vector<Rgb> exitance = radiosity.empty() ? radiosity_of(elements, result.irradiance) : radiosity;
+    clock.run("views", [&] {
+      for (const EyeView& eye : options.views) {
+        result.views.push_back(render_fisheye(eye, options.view, elements, exitance, surface, *tracer, options.sky, options.seed));
+        result.glare.push_back(evaluate_glare(result.views.back()));
+      }
+      return 0;
+    });
+  }
   report.surfaces = surface_statistics(scene, surface, elements, result.irradiance);
 
   for (const AtlasPage& p : surface.pages) report.page_texels += size_t(p.width) * p.height;

@@ -13,7 +13,9 @@
 #include "baker/energy_balance.h"
 #include "baker/finish.h"
 #include "baker/gather_filter.h"
+#include "baker/glare.h"
 #include "baker/interreflection.h"
+#include "baker/luminance_view.h"
 #include "baker/material_sampler.h"
 #include "baker/path_tracer.h"
 #include "baker/patches.h"
@@ -58,6 +60,8 @@ struct BakeOptions {
   bool near_field = true;       // gather rays landing close by take the texel's exitance (final_gather.h)
   SkyLight sky;                 // a sky lighting the scene besides its lamps (sky_light.h); radiosity only
   std::vector<Sensor> sensors;  // points in the air to measure illuminance at (sensor_points.h)
+  std::vector<EyeView> views;   // eyes to render a fisheye luminance image and its glare for (luminance_view.h)
+  ViewOptions view;
   WorkPlaneOptions work_plane;  // and a grid of them over the floors
   SensorOptions sensor;
   uint64_t seed = 1;            // same seed, same input: bit-identical output, whatever the thread count
@@ -110,6 +114,8 @@ struct BakeResult {
   std::vector<float> standard_error;               // Method::PathTrace: per element, lux; else empty
   std::vector<Sensor> sensors;                     // BakeOptions::sensors, then the work plane's
   std::vector<double> sensor_lux;                  // per sensor
+  std::vector<FisheyeImage> views;                 // per BakeOptions::views
+  std::vector<Glare> glare;                        // per view
   WorkPlane work_plane;                            // its sensor_at indexes `sensors`
   BakeReport report;
 };

@@ -35,6 +35,7 @@ enum class Stream : uint64_t {
   Sky,
   SensorSky,
   SensorGather,
+  View,
 };
 
 // A counter-based generator for one (seed, stream, key) triple.

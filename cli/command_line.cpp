@@ -264,12 +264,22 @@ analysis options (bake): illuminance where there is no surface, and images to re
                           the value at the top of the false-colour scales (default auto: the 99th
                           percentile, rounded up to 1, 2, 2.5 or 5 x 10^k)
 
+glare options (bake): what an eye sees of the bake, and how much it glares
+  --view X,Y,Z:DX,DY,DZ   an eye at X,Y,Z looking along DX,DY,DZ (up stays +Y), repeatable:
+                          view_N.exr (a 180-degree fisheye of luminance, cd/m2, sky and sun
+                          included), view_N.png (false colour) and, in report.json, its vertical
+                          illuminance and daylight glare probability DGP (Wienold) with the glare
+                          sources (docs/annual.md)
+  --view-size N           fisheye pixels per side (default 512)
+
 annual options (bake): a year of daylight at the sensors by daylight coefficients (docs/annual.md)
   --weather FILE.epw      an EnergyPlus weather file: its site and every hour's Perez sky and sun
-                          (samples/weather has synthetic years); needs --sensors or --work-plane,
-                          takes no --sky or site. Writes annual_illuminance.f32 (float32, hour by
+                          (samples/weather has synthetic years); needs --sensors, --work-plane or
+                          --view, takes no --sky or site. Writes annual_illuminance.f32 (float32, by
                           hour, sensor by sensor), annual_sensors.csv (DA, UDI bins, sun hours),
-                          work-plane maps and, in report.json, sDA300/50%, ASE1000/250h, UDI
+                          work-plane maps and, in report.json, sDA300/50%, ASE1000/250h, UDI;
+                          with --view, each eye's hourly DGP (annual_dgp.f32) and the shares of
+                          occupied hours over 0.35, 0.40 and 0.45
   --occupied FROM-TO      occupied hours, local standard time (default 8-18, IES LM-83)
   --da-threshold LUX      daylight autonomy's illuminance (default 300)
 
@@ -634,6 +644,17 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
        }},
       {"--sensors", [&](const std::string& v) { b.sensor_file = v; }},
       {"--weather", [&](const std::string& v) { b.weather_file = v; }},
+      {"--view", [&](const std::string& v) {
+         float n[6];
+         char tail = 0;
+         if (std::sscanf(v.c_str(), "%f,%f,%f:%f,%f,%f%c", &n[0], &n[1], &n[2], &n[3], &n[4], &n[5], &tail) != 6 ||
+             !std::all_of(n, n + 6, [](float x) { return std::isfinite(x); }))
+           throw UsageError("option --view must be X,Y,Z:DX,DY,DZ (the eye and where it looks, metres)" + got(v));
+         const Vec3 direction{n[3], n[4], n[5]};
+         if (!(length(direction) > 0)) throw UsageError("option --view needs a direction to look in" + got(v));
+         b.bake.views.push_back({{n[0], n[1], n[2]}, normalize(direction), {0, 1, 0}});
+       }},
+      {"--view-size", [&](const std::string& v) { b.bake.view.size = int(parse_integer("--view-size", v, 16, 4096)); }},
       {"--occupied", [&](const std::string& v) {
          const size_t dash = v.find('-');
          if (dash == std::string::npos) throw UsageError("option --occupied must be FROM-TO in hours, as 8-18" + got(v));
@@ -723,8 +744,8 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
   if (!b.weather_file.empty()) {
     if (b.daylight.sky != SkyKind::None) throw UsageError("--weather gives every hour its sky: leave out --sky");
     if (site.given()) throw UsageError("--weather gives the site: leave out --latitude, --longitude, --date and --time");
-    if (b.sensor_file.empty() && !b.bake.work_plane.enabled)
-      throw UsageError("--weather needs --sensors or --work-plane: the year's results are per sensor");
+    if (b.sensor_file.empty() && !b.bake.work_plane.enabled && b.bake.views.empty())
+      throw UsageError("--weather needs --sensors, --work-plane or --view: the year's results are per sensor or eye");
     if (b.bake.method != Method::Radiosity) throw UsageError("--weather needs --method radiosity");
     if (b.daylight_factor) throw UsageError("--daylight-factor is for one overcast sky, not a year of weather");
   }

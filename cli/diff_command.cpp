@@ -1,10 +1,14 @@
 #include "cli/diff_command.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <map>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
 #include "baker/errors.h"
+#include "io/annual_comparison.h"
 #include "io/bake_lightmaps.h"
 #include "io/lightmap_images.h"
 
@@ -96,9 +100,57 @@ void print_text(const DiffCommand& cmd, const BakeLightmaps& a, const LightmapDi
                 shown(c, c.limit, a.unit).c_str(), c.exceeded ? "EXCEEDED" : "ok");
 }
 
+// Two years of daylight (radbake bake --weather folders): their metrics side by side and, with
+// --diff-images, where daylight autonomy moved.
+int run_annual_diff(const DiffCommand& cmd) {
+  const DifferenceLimits& l = cmd.limits;
+  if (l.rmse || l.p50 || l.p95 || l.p99 || l.max_error)
+    throw InputError("--max-rmse, --max-p50/p95/p99 and --max-error compare lightmaps; " + cmd.reference + " and " +
+                     cmd.candidate + " are years of daylight");
+  const AnnualFolder a = read_annual_folder(cmd.reference), b = read_annual_folder(cmd.candidate);
+  const std::vector<double> change = daylight_autonomy_change(a, b);
+  // Full colour at the largest change, rounded up to 1, 2 or 5 x 10^k points (at least 1).
+  double largest = 0;
+  for (double c : change) largest = std::max(largest, std::fabs(c));
+  double full_colour = 1;
+  for (double decade = 1; full_colour < largest; decade *= 10)
+    for (double step : {1.0, 2.0, 5.0})
+      if (full_colour < largest) full_colour = step * decade;
+  std::vector<std::string> images;
+  if (!cmd.image_folder.empty()) {
+    std::filesystem::create_directories(cmd.image_folder);
+    images.push_back(cmd.image_folder + "/daylight_autonomy_change.png");
+    write_daylight_autonomy_change_map(images.back(), a, change, full_colour);
+  }
+  std::map<std::string, double> theirs(b.metrics.begin(), b.metrics.end());
+  if (cmd.json) {
+    nlohmann::ordered_json metrics = nlohmann::ordered_json::array();
+    for (const auto& [name, value] : a.metrics)
+      if (theirs.count(name)) metrics.push_back({{"metric", name}, {"a", value}, {"b", theirs[name]}, {"b_minus_a", theirs[name] - value}});
+    nlohmann::ordered_json j = {{"reference", cmd.reference}, {"candidate", cmd.candidate}, {"metrics", metrics},
+                                {"sensors", change.size()}, {"images", images}, {"full_colour_points", full_colour}};
+    std::printf("%s\n", j.dump(1).c_str());
+    return 0;
+  }
+  std::printf("radbake diff: a year of daylight, %s (B) against %s (A)\n", cmd.candidate.c_str(), cmd.reference.c_str());
+  std::printf("  %-40s %10s %10s %10s\n", "metric", "A", "B", "B - A");
+  for (const auto& [name, value] : a.metrics)
+    if (theirs.count(name)) std::printf("  %-40s %10.3f %10.3f %+10.3f\n", name.c_str(), value, theirs[name], theirs[name] - value);
+  double most = 0, least = 0;
+  for (double c : change) most = std::max(most, c), least = std::min(least, c);
+  std::printf("  daylight autonomy per sensor: %zu sensors, from %+.1f to %+.1f points\n", change.size(), least, most);
+  for (const std::string& image : images)
+    std::printf("  wrote %s (white: unchanged; red: B more, blue: B less, full colour at %g points)\n", image.c_str(), full_colour);
+  return 0;
+}
+
 }  // namespace
 
 int run_diff(const DiffCommand& cmd) {
+  const bool a_annual = is_annual_folder(cmd.reference), b_annual = is_annual_folder(cmd.candidate);
+  if (a_annual && b_annual) return run_annual_diff(cmd);
+  if (a_annual || b_annual)
+    throw InputError("one of " + cmd.reference + " and " + cmd.candidate + " is a year of daylight and the other a bake");
   const BakeLightmaps a = read_bake_lightmaps(cmd.reference), b = read_bake_lightmaps(cmd.candidate);
   if (a.quantity != b.quantity || a.unit != b.unit)
     throw InputError(cmd.reference + " holds " + a.quantity + " (" + a.unit + ") but " + cmd.candidate + " holds " +

@@ -166,10 +166,12 @@ int run_annual(const radbake::BakeCommand& cmd) {
   for (size_t h = 0; h < occupied.size(); ++h)  // EPW's hour h ends at h:00
     occupied[h] = weather.hours[h].hour > cmd.occupied_from && weather.hours[h].hour <= cmd.occupied_to;
   const AnnualMetrics metrics = annual_metrics(annual.lux, annual.sun_lux, annual.sensors.size(), occupied, cmd.metrics);
+  const AnnualGlare glare = annual_glare(annual, options.views, skies.hours, occupied);
   AnnualRun run;
   run.input = cmd.input, run.weather_file = cmd.weather_file, run.options = cmd.effective;
   run.weather = &weather, run.skies = &skies, run.daylight = &annual, run.metrics = &metrics;
   run.metric_options = &cmd.metrics, run.occupied_from = cmd.occupied_from, run.occupied_to = cmd.occupied_to;
+  run.glare = &glare, run.eyes = &options.views;
   run.total_seconds = seconds_since(start);
   run.peak_memory_bytes = peak_memory_bytes();
   stop_if_interrupted();
@@ -204,6 +206,7 @@ int run_bake(const radbake::BakeCommand& cmd) {
   if (daylight.light.enabled) run.daylight = daylight.summary;
   AnalysisOptions analysis = cmd.analysis;
   analysis.lightmap_is_irradiance = cmd.bake.store == StoredQuantity::Irradiance;
+  analysis.views = cmd.bake.views;
   if (cmd.daylight_factor) analysis.daylight_factor_reference = daylight_factor_reference(cmd.daylight, daylight);
   if (!cmd.sensor_file.empty()) options.sensors = read_sensor_csv(cmd.sensor_file);
   const EffectPlan plan = plan_effects(loaded.scene, options.plan);

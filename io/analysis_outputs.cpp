@@ -145,6 +145,30 @@ AnalysisFiles write_analysis(const BakeResult& result, const std::string& folder
       out.files.push_back("work_plane_daylight_factor.png");
     }
   }
+  for (size_t v = 0; v < result.views.size(); ++v) {
+    const FisheyeImage& image = result.views[v];
+    const Glare& glare = result.glare[v];
+    out.views.push_back({options.views[v], glare});
+    LightmapPage page;
+    page.width = page.height = image.size;
+    page.valid.assign(image.luminance.size(), 1);
+    for (float l : image.luminance) page.texels.push_back(Rgb{l, l, l});
+    const std::string exr = "view_" + std::to_string(v) + ".exr", png = "view_" + std::to_string(v) + ".png";
+    write_exr(folder + "/" + exr, page);
+    FalseColourScale scale;
+    scale.logarithmic = true;
+    scale.decades = 4;
+    scale.unit = "cd/m2";
+    std::vector<float> values(image.luminance);
+    for (int y = 0; y < image.size; ++y)
+      for (int x = 0; x < image.size; ++x) {
+        Vec3 d;
+        double omega;
+        if (!fisheye_pixel(image, x, y, &d, &omega)) values[size_t(y) * size_t(image.size) + size_t(x)] = std::numeric_limits<float>::quiet_NaN();
+      }
+    write_false_colour(folder + "/" + png, values, image.size, image.size, scale, 1);
+    out.files.insert(out.files.end(), {exr, png});
+  }
   for (size_t p = 0; p < result.pages.size(); ++p) {
     const LightmapPage& page = result.pages[p];
     if (options.false_colour_pages) {

@@ -18,6 +18,7 @@ struct AnalysisOptions {
   // (CIE overcast sky). 0: no daylight factor.
   double daylight_factor_reference = 0;
   bool lightmap_is_irradiance = true;  // pages hold lux (else lm/m2: no daylight factor pages)
+  std::vector<EyeView> views;          // the bake's BakeOptions::views, for the report
 };
 
 struct ReadingSummary {
@@ -28,8 +29,14 @@ struct ReadingSummary {
 
 ReadingSummary summarise(const std::vector<double>& values);
 
+struct ViewGlare {
+  EyeView eye;
+  Glare glare;
+};
+
 struct AnalysisFiles {
   std::vector<std::string> files;  // written, relative to the folder
+  std::vector<ViewGlare> views;    // per BakeOptions::views
   ReadingSummary sensors, work_plane;              // lux
   ReadingSummary sensors_daylight_factor, work_plane_daylight_factor;  // percent, when asked
 };
@@ -46,7 +53,9 @@ void write_work_plane_map(const std::string& path, const WorkPlane& plane, const
 
 // Writes into `folder`: sensors.csv (every sensor: position, normal, lux, and the daylight factor
 // in percent when asked), work_plane.png (and work_plane_daylight_factor.png) seen from above
-// with -Z up and +X right, NAME_false_colour_N.png and NAME_daylight_factor_N.png per page.
+// with -Z up and +X right, NAME_false_colour_N.png and NAME_daylight_factor_N.png per page, and
+// per view view_N.exr (its fisheye luminance, cd/m2) and view_N.png (the same in false colour,
+// four decades).
 AnalysisFiles write_analysis(const BakeResult& result, const std::string& folder, const std::string& name,
                              const AnalysisOptions& options);
 

@@ -61,6 +61,24 @@ std::vector<std::string> write_annual(const AnnualRun& run, const std::string& f
     write_work_plane_map(folder + "/work_plane_sun_hours.png", a.work_plane, sun_hours, hours);
     files.insert(files.end(), {"work_plane_daylight_autonomy.png", "work_plane_udi_autonomous.png", "work_plane_sun_hours.png"});
   }
+  nlohmann::ordered_json views = nlohmann::ordered_json::array();
+  if (run.glare && !run.eyes->empty()) {
+    const std::string path = folder + "/annual_dgp.f32";
+    std::ofstream out(path, std::ios::binary);
+    out.write(reinterpret_cast<const char*>(run.glare->dgp.data()), std::streamsize(run.glare->dgp.size() * sizeof(float)));
+    check(out, path);
+    files.push_back("annual_dgp.f32");
+    for (size_t e = 0; e < run.eyes->size(); ++e) {
+      const EyeView& eye = (*run.eyes)[e];
+      const EyeGlareSummary& g = run.glare->eyes[e];
+      views.push_back({{"position", {eye.position.x, eye.position.y, eye.position.z}},
+                       {"direction", {eye.direction.x, eye.direction.y, eye.direction.z}},
+                       {"method", "enhanced simplified DGP (Wienold 2009): Ev by the coefficients, the sun's disc the one source"},
+                       {"occupied_daylit_hours", g.occupied_hours}, {"mean_dgp", g.mean_dgp},
+                       {"share_dgp_035_or_more", g.over_035}, {"share_dgp_040_or_more", g.over_040},
+                       {"share_dgp_045_or_more", g.over_045}});
+    }
+  }
   files.push_back("report.json");
   const AnnualMetricsOptions& o = *run.metric_options;
   nlohmann::ordered_json report = {
@@ -84,6 +102,7 @@ std::vector<std::string> write_annual(const AnnualRun& run, const std::string& f
                    {"mean_udi_useful_percent", 100 * m.mean_udi_useful},
                    {"udi_bins_lux", {o.udi_low, o.udi_supplementary, o.udi_high}},
                    {"udi_useful_lux", {o.udi_low, o.udi_classic_high}}}},
+      {"views", views},
       {"total_seconds", run.total_seconds},
       {"peak_memory_bytes", run.peak_memory_bytes},
       {"files", files},

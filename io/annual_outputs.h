@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "baker/annual_daylight.h"
+#include "baker/annual_glare.h"
 #include "baker/annual_metrics.h"
 #include "baker/annual_skies.h"
 #include "baker/weather.h"
@@ -21,6 +22,8 @@ struct AnnualRun {
   const AnnualDaylight* daylight = nullptr;
   const AnnualMetrics* metrics = nullptr;
   const AnnualMetricsOptions* metric_options = nullptr;
+  const AnnualGlare* glare = nullptr;        // with eyes
+  const std::vector<EyeView>* eyes = nullptr;
   int occupied_from = 8, occupied_to = 18;
   double total_seconds = 0;
   size_t peak_memory_bytes = 0;
@@ -30,7 +33,7 @@ struct AnnualRun {
 // sensors for the file's first hour, then the next), annual_sensors.csv (position, normal, DA,
 // UDI bins in percent of the occupied hours, sun hours), with a work plane
 // work_plane_daylight_autonomy.png, work_plane_udi_autonomous.png and work_plane_sun_hours.png,
-// then report.json. Returns the files written, relative to the folder.
+// with eyes annual_dgp.f32 (float32, hour-major, eye by eye), then report.json. Returns the files written, relative to the folder.
 std::vector<std::string> write_annual(const AnnualRun& run, const std::string& folder);
 
 }  // namespace radbake

@@ -36,6 +36,25 @@ nlohmann::ordered_json readings_json(const ReadingSummary& lux, const ReadingSum
   return out;
 }
 
+// Per view: the eye, the vertical illuminance and the glare its fisheye shows (baker/glare.h).
+nlohmann::ordered_json views_json(const std::vector<ViewGlare>& views) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::array();
+  for (const ViewGlare& v : views) {
+    nlohmann::ordered_json sources = nlohmann::ordered_json::array();
+    for (const GlareSource& s : v.glare.sources)
+      sources.push_back({{"luminance_cd_per_m2", s.luminance}, {"solid_angle_sr", s.solid_angle},
+                         {"position_index", s.position_index}, {"direction", {s.direction.x, s.direction.y, s.direction.z}}});
+    out.push_back({{"position", {v.eye.position.x, v.eye.position.y, v.eye.position.z}},
+                   {"direction", {v.eye.direction.x, v.eye.direction.y, v.eye.direction.z}},
+                   {"vertical_illuminance_lux", v.glare.vertical_illuminance},
+                   {"mean_luminance_cd_per_m2", v.glare.mean_luminance},
+                   {"glare_threshold_cd_per_m2", v.glare.threshold},
+                   {"dgp", v.glare.dgp},
+                   {"glare_sources", sources}});
+  }
+  return out;
+}
+
 nlohmann::ordered_json surfaces_json(const std::vector<SurfaceStatistics>& surfaces) {
   nlohmann::ordered_json out = nlohmann::ordered_json::array();
   for (const SurfaceStatistics& s : surfaces)
@@ -134,6 +153,7 @@ void write_report(const std::string& path, const RunInfo& run, const Scene& scen
       {"daylight", daylight_json(run.daylight)},
       {"sensors", readings_json(run.analysis.sensors, run.analysis.sensors_daylight_factor)},
       {"work_plane", readings_json(run.analysis.work_plane, run.analysis.work_plane_daylight_factor)},
+      {"views", views_json(run.analysis.views)},
       {"surfaces", surfaces_json(bake.surfaces)},
       {"warnings", warnings},
       {"files", run.files},

@@ -9,6 +9,7 @@ ferren/       After the Goral et al. (1984) demonstration: vertical boards, whit
 classroom/    A daylit classroom (issue 14's sample): 9 x 7 x 3 m, three windows in the south wall
               (+Z; north is -Z) glazed with a visible transmittance of 0.7, a 1 m overhang over
               them, twelve desks and a blackboard; no lamp: the sky and the sun light it.
+              classroom_no_overhang.gltf: the same without the overhang (issue 17's design variant).
 study_room/   The accuracy study's interior (docs/accuracy.md): a 4 x 3 x 2.6 m room lit by a
               window and a ceiling lamp, a table casting a shadow, and a bookcase standing 2 cm
               from a wall (a narrow gap light must not leak through).
@@ -151,7 +152,8 @@ def study_room():
     g.save(os.path.join(out, "study_room.gltf"), bin_name="study_room.bin")
 
 
-def classroom():
+def classroom(overhang=True):
+    """The classroom; overhang=False: the design variant without the 1 m slab over the windows."""
     g = Gltf("radbake samples/make_samples.py")
     plaster = g.material("plaster", (0.7, 0.68, 0.64))
     ceiling = g.material("ceiling_tiles", (0.8, 0.8, 0.78))
@@ -189,7 +191,8 @@ def classroom():
         g.node("window_%d" % i, g.mesh("window_%d" % i, [facing(pane, inside)], glass))
     # The overhang: a 1 m concrete slab outside, level with the ceiling, the whole wall long.
     slab = [[0, height, z], [width, height, z], [width, height, z + 1.0], [0, height, z + 1.0]]
-    g.node("overhang", g.mesh("overhang", [facing(slab, [width / 2, 0, z + 0.5])], concrete))
+    if overhang:
+        g.node("overhang", g.mesh("overhang", [facing(slab, [width / 2, 0, z + 0.5])], concrete))
     g.node("blackboard", g.mesh("blackboard", [facing([[2.5, 0.9, 0.01], [6.5, 0.9, 0.01], [6.5, 2.1, 0.01],
                                                         [2.5, 2.1, 0.01]], inside)], board))
     # Twelve desks in four rows facing the blackboard, 1.2 x 0.6 m tops at 0.72 m on four legs.
@@ -207,11 +210,13 @@ def classroom():
             g.node(name + "_legs", g.mesh(name + "_legs", legs, wood))
     out = os.path.join(HERE, "classroom")
     os.makedirs(out, exist_ok=True)
-    g.save(os.path.join(out, "classroom.gltf"), bin_name="classroom.bin")
+    name = "classroom" if overhang else "classroom_no_overhang"
+    g.save(os.path.join(out, name + ".gltf"), bin_name=name + ".bin")
 
 
 if __name__ == "__main__":
     classroom()
+    classroom(overhang=False)
     cornell_box()
     ferren()
     study_room()

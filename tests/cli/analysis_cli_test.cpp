@@ -192,3 +192,35 @@ TEST(ClassroomSample, TheDecemberSunReachesTheWorkPlaneInPatches) {
 
 }  // namespace
 }  // namespace radbake
+
+namespace radbake {
+namespace {
+
+TEST(GlareCli, AViewWritesItsFisheyeAndReportsItsDgp) {
+  const std::string out = test::fresh_folder("glare_cli") + "/out";
+  // The classroom at 10:00 on 21 December in London: from mid-room, the sun low in the south
+  // windows, and the back wall behind.
+  const test::Outcome r = test::radbake(
+      "bake " + test::source_path("samples/classroom/classroom.gltf") + " -o " + out +
+      " --quiet --sky perez --latitude 51.5 --longitude -0.12 --date 2026-12-21 --time 10:00 --direct-normal 450"
+      " --diffuse-horizontal 60 --view 4.5,1.2,3.5:0,0,1 --view 4.5,1.2,3.5:0,0,-1 --view-size 256");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json report = nlohmann::json::parse(test::slurp(out + "/report.json"));
+  ASSERT_EQ(report["views"].size(), 2u);
+  const nlohmann::json& south = report["views"][0];
+  const nlohmann::json& north = report["views"][1];
+  // Facing the low sun: intolerable glare (Wienold: DGP over 0.45); facing the back wall: under
+  // 0.35, imperceptible.
+  EXPECT_GT(south["dgp"].get<double>(), 0.45) << south.dump();
+  EXPECT_LT(north["dgp"].get<double>(), 0.35) << north.dump();
+  EXPECT_GT(south["vertical_illuminance_lux"].get<double>(), 5 * north["vertical_illuminance_lux"].get<double>());
+  EXPECT_GT(south["glare_sources"].size(), 0u);
+  for (const char* file : {"/view_0.exr", "/view_0.png", "/view_1.exr", "/view_1.png"})
+    EXPECT_FALSE(test::slurp(out + file).empty()) << file;
+  test::expect_one_line_refusal(test::radbake("bake " + test::source_path("samples/classroom/classroom.gltf") + " -o " +
+                                              out + "2 --view 1,2,3"),
+                                "option --view must be X,Y,Z:DX,DY,DZ", out + "2");
+}
+
+}  // namespace
+}  // namespace radbake

@@ -4,6 +4,7 @@
 
 #include <cstring>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -21,7 +22,8 @@ TEST(AnnualCli, AYearAtThreeSensorsWritesTheSeriesTheMetricsAndTheReport) {
   const std::string sensors = test::write_text_file("annual_sensors_in.csv", "4.5,0.8,6.0\n4.5,0.8,3.5\n4.5,0.8,1.0\n");
   const test::Outcome r = test::radbake("bake " + test::source_path(kClassroom) + " -o " + folder + "/out --weather " +
                                         test::source_path(kLondon) + " --sensors " + sensors +
-                                        " --quiet --texels 8000 --sky-rays 64 --sun-rays 8 --sensor-rays 256");
+                                        " --view 4.5,1.2,3.5:0,0,1 --quiet --texels 8000 --sky-rays 64 --sun-rays 8"
+                                        " --sensor-rays 256");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("sDA300/50%"), std::string::npos) << r.out;
 
@@ -64,13 +66,45 @@ TEST(AnnualCli, AYearAtThreeSensorsWritesTheSeriesTheMetricsAndTheReport) {
   EXPECT_EQ(report["metrics"]["occupied_hours"], 3650);
   EXPECT_NEAR(report["metrics"]["sDA_percent"].get<double>(), 100.0 * double(autonomous) / 3, 1e-9);
   EXPECT_NEAR(report["metrics"]["ASE_percent"].get<double>(), 100.0 * double(sunny) / 3, 1e-9);
+
+  // The eye mid-room facing the south windows: its hourly DGP, and how often it glares.
+  EXPECT_EQ(test::slurp(folder + "/out/annual_dgp.f32").size(), 8760u * sizeof(float));
+  ASSERT_EQ(report["views"].size(), 1u);
+  const nlohmann::json& eye = report["views"][0];
+  EXPECT_GT(eye["occupied_daylit_hours"].get<double>(), 3000);
+  EXPECT_GT(eye["mean_dgp"].get<double>(), 0.16);  // the formula's floor
+  EXPECT_GT(eye["share_dgp_045_or_more"].get<double>(), 0.0) << "a low sun in the south windows some mornings";
+  EXPECT_LE(eye["share_dgp_045_or_more"].get<double>(), eye["share_dgp_035_or_more"].get<double>());
+  EXPECT_LE(eye["share_dgp_035_or_more"].get<double>(), 1.0);
+
+  // The design variant without the overhang, at the same sensors, compared metric by metric.
+  const test::Outcome variant = test::radbake(
+      "bake " + test::source_path("samples/classroom/classroom_no_overhang.gltf") + " -o " + folder + "/variant --weather " +
+      test::source_path(kLondon) + " --sensors " + sensors + " --view 4.5,1.2,3.5:0,0,1 --quiet --texels 8000"
+      " --sky-rays 64 --sun-rays 8 --sensor-rays 256");
+  ASSERT_EQ(variant.status, 0) << variant.err;
+  const test::Outcome diff = test::radbake("diff " + folder + "/out " + folder + "/variant --json --diff-images " + folder + "/maps");
+  ASSERT_EQ(diff.status, 0) << diff.err;
+  const nlohmann::json d = nlohmann::json::parse(diff.out);
+  std::map<std::string, nlohmann::json> by_name;
+  for (const nlohmann::json& m : d["metrics"]) by_name[m["metric"]] = m;
+  for (const char* metric : {"sDA_percent", "ASE_percent", "mean_daylight_autonomy_percent", "mean_udi_useful_percent",
+                             "view_0_mean_dgp", "view_0_share_dgp_045_or_more"})
+    ASSERT_TRUE(by_name.count(metric)) << metric << " " << diff.out;
+  const nlohmann::json& ase = by_name["ASE_percent"];
+  EXPECT_NEAR(ase["a"].get<double>(), report["metrics"]["ASE_percent"].get<double>(), 1e-9);
+  EXPECT_NEAR(ase["b_minus_a"].get<double>(), ase["b"].get<double>() - ase["a"].get<double>(), 1e-9);
+  // Without the overhang more sun and sky reach the room: autonomy and glare cannot fall.
+  EXPECT_GE(by_name["mean_daylight_autonomy_percent"]["b_minus_a"].get<double>(), 0.0);
+  EXPECT_GE(by_name["view_0_mean_dgp"]["b_minus_a"].get<double>(), 0.0);
+  EXPECT_FALSE(test::slurp(folder + "/maps/daylight_autonomy_change.png").empty());
 }
 
 TEST(AnnualCli, WhatAYearCannotBeRunWithIsOneLine) {
   const std::string folder = test::fresh_folder("annual_cli_refusals"), out = folder + "/out";
   const std::string scene = test::source_path(kClassroom), weather = " --weather " + test::source_path(kLondon);
   test::expect_one_line_refusal(test::radbake("bake " + scene + " -o " + out + weather),
-                                "--weather needs --sensors or --work-plane", out);
+                                "--weather needs --sensors, --work-plane or --view", out);
   test::expect_one_line_refusal(test::radbake("bake " + scene + " -o " + out + weather + " --work-plane --sky cie-overcast"),
                                 "leave out --sky", out);
   test::expect_one_line_refusal(test::radbake("bake " + scene + " -o " + out + weather + " --work-plane --latitude 40"),
