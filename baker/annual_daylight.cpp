@@ -7,6 +7,7 @@
 #include <cmath>
 #include <map>
 
+#include "baker/finish.h"
 #include "baker/patch_transport.h"
 #include "baker/sampling.h"
 #include "baker/sky_patches.h"
@@ -106,6 +107,41 @@ double sun_seen(const Sensor& eye, const SkyView& view, const Surface& surface, 
   return seen / sun_rays;
 }
 
+// Each texel's year from its coefficients, over the occupied daylit hours, into pages.
+void texel_maps(const Elements& e, const Surface& surface, const std::vector<float>& coefficient, size_t columns,
+                size_t bins, const std::vector<float>& hour_luminance, const std::vector<float>& hour_sun,
+                const std::vector<size_t>& sun_bin_of_hour, const std::vector<SkyLight>& hours,
+                const AnnualDaylightOptions& annual, AnnualDaylight& out) {
+  std::vector<size_t> counted;
+  for (size_t h = 0; h < hours.size(); ++h)
+    if (hours[h].enabled && h < annual.occupied.size() && annual.occupied[h]) counted.push_back(h);
+  const size_t n = e.size();
+  std::vector<Rgb> autonomy(n), useful(n), mean(n);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 64), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t i = r.begin(); i < r.end(); ++i) {
+      if (!e.valid(i) || counted.empty()) continue;
+      const float* c = &coefficient[i * columns];
+      size_t over = 0, within = 0;
+      double total = 0;
+      for (size_t h : counted) {
+        const float* l = &hour_luminance[h * bins];
+        float lux = 0;
+        for (size_t b = 0; b < bins; ++b) lux += c[b] * l[b];
+        if (hour_sun[h] > 0) lux += hour_sun[h] * c[bins + sun_bin_of_hour[h]];
+        over += lux >= annual.da_threshold;
+        within += lux >= annual.udi_low && lux <= annual.udi_high;
+        total += lux;
+      }
+      const float k = 100.0f / float(counted.size());
+      autonomy[i] = Rgb{1, 1, 1} * (float(over) * k), useful[i] = Rgb{1, 1, 1} * (float(within) * k);
+      mean[i] = Rgb{1, 1, 1} * float(total / double(counted.size()));
+    }
+  });
+  out.texel_daylight_autonomy = compose_pages(e, autonomy, surface.pages);
+  out.texel_udi = compose_pages(e, useful, surface.pages);
+  out.texel_mean_lux = compose_pages(e, mean, surface.pages);
+}
+
 }  // namespace
 
 AnnualDaylight annual_daylight(const Scene& scene, const Atlas& atlas, const BakeOptions& options,
@@ -198,6 +234,9 @@ AnnualDaylight annual_daylight(const Scene& scene, const Atlas& atlas, const Bak
   // send each sensor, lux per cd/m2 (sky, ground) or per lux of direct normal sun.
   const size_t columns = bins + sun_bin_list.size();
   std::vector<float> coefficient(sensors.size() * columns, 0.0f);
+  // Per element, what each column brings it (lux per unit), when texel maps are asked for.
+  const bool texels = !annual.occupied.empty();
+  std::vector<float> texel_coefficient(texels ? n * columns : 0, 0.0f);
   progress.begin("daylight coefficients", columns);
   tbb::parallel_for(tbb::blocked_range<size_t>(0, columns, 1), [&](const tbb::blocked_range<size_t>& r) {
     for (size_t c = r.begin(); c < r.end(); ++c) {
@@ -234,6 +273,11 @@ AnnualDaylight annual_daylight(const Scene& scene, const Atlas& atlas, const Bak
       Progress quiet;
       const RadiositySolution solution = solve_radiosity(patches, light_between.transport, patch_direct, options.solve, quiet);
       const std::vector<Rgb> gathered = gathered_irradiance(patches, light_between.transport, solution.exitance);
+      if (texels)
+        for (size_t i = 0; i < n; ++i) {
+          const uint32_t p = patches.patch_of_element[i];
+          texel_coefficient[i * columns + c] = direct[i] + (p == UINT32_MAX ? 0.0f : sum(gathered[p]) / 3);
+        }
       for (size_t s = 0; s < sensors.size(); ++s) {
         Rgb sent{};
         for (int64_t j : hits[s]) {
@@ -260,6 +304,7 @@ AnnualDaylight annual_daylight(const Scene& scene, const Atlas& atlas, const Bak
   out.lux.assign(hours.size() * sensors.size(), 0.0f);
   out.sun_lux.assign(hours.size() * sensors.size(), 0.0f);
   out.eye_sun_seen.assign(hours.size() * out.eyes, 0.0f);
+  std::vector<float> hour_luminance(hours.size() * bins, 0.0f), hour_sun(hours.size(), 0.0f);  // for the texels
   progress.begin("hours", hours.size());
   tbb::parallel_for(tbb::blocked_range<size_t>(0, hours.size(), 8), [&](const tbb::blocked_range<size_t>& r) {
     std::vector<double> fine_luminance(fine.size()), coarse(bins);
@@ -278,6 +323,8 @@ AnnualDaylight annual_daylight(const Scene& scene, const Atlas& atlas, const Bak
       for (size_t p = 0; p + 1 < bins; ++p) coarse[p] = patch_luminance(sky, p, view, compass);
       coarse[bins - 1] = view.luminance(compass.up * -1.0f);
       const double sun = view.sun_up() ? hour.sun_illuminance : 0.0;
+      for (size_t b = 0; b < bins; ++b) hour_luminance[h * bins + b] = float(coarse[b]);
+      hour_sun[h] = sun_bin_of_hour[h] != SIZE_MAX ? float(sun) : 0.0f;
       for (size_t s = 0; s < sensors.size(); ++s) {
         double lux = seen_sky[s].ground * coarse[bins - 1];
         for (auto [q, w] : seen_sky[s].patches) lux += w * fine_luminance[q];
@@ -296,6 +343,7 @@ AnnualDaylight annual_daylight(const Scene& scene, const Atlas& atlas, const Bak
     progress.advance(r.size());
   });
   progress.end();
+  if (texels) texel_maps(e, surface, texel_coefficient, columns, bins, hour_luminance, hour_sun, sun_bin_of_hour, hours, annual, out);
   // The eyes' columns out of the sensors' series.
   const size_t listed = out.sensors.size();
   if (out.eyes > 0) {

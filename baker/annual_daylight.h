@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "baker/bake.h"
+#include "baker/finish.h"
 #include "baker/sky_light.h"
 
 namespace radbake {
@@ -27,6 +28,11 @@ struct AnnualDaylightOptions {
   int direct_subdivision = 4;  // patches for the sky a sensor sees directly (4: 2305 patches of about 3 degrees)
   int sun_subdivision = 4;     // sun bins (Reinhart MF:m patches the year's suns fall in)
   uint32_t bin_sun_rays = 4;   // per texel per sun bin, toward the bin's centre
+  // Per texel, over the hours `occupied` marks (parallel to the hours; empty: no texel maps): the
+  // share at da_threshold lux or more, the share in udi_low..udi_high, the mean illuminance. A
+  // texel's light is its coefficients' (the sky by the 145 patches, the sun by its bin's centre).
+  std::vector<bool> occupied;
+  double da_threshold = 300, udi_low = 300, udi_high = 3000;  // lux
 };
 
 struct AnnualDaylight {
@@ -39,6 +45,9 @@ struct AnnualDaylight {
   // where it looks, and the share of the sun's disc it sees (0 when the sun is behind it or down).
   size_t eyes = 0;
   std::vector<float> eye_lux, eye_sun_seen;
+  // With AnnualDaylightOptions::occupied: lightmap pages (the atlas's) of each texel's daylight
+  // autonomy and UDI share (percent of the occupied daylit hours) and mean illuminance (lux).
+  std::vector<LightmapPage> texel_daylight_autonomy, texel_udi, texel_mean_lux;
   size_t sky_patches = 0;       // solved, the ground included
   size_t sun_bins = 0;          // solved
   double coefficient_seconds = 0, hours_seconds = 0;

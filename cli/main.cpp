@@ -160,15 +160,20 @@ int run_annual(const radbake::BakeCommand& cmd) {
   AtlasOptions atlas_options = cmd.atlas;
   atlas_options.progress = progress;
   const Atlas atlas = ensure_lightmap_uvs(mesh_views(loaded.scene), atlas_options);
-  const AnnualDaylight annual = annual_daylight(loaded.scene, atlas, options, skies.hours, AnnualDaylightOptions{}, progress);
-  display.finish();
   std::vector<bool> occupied(weather.hours.size());
   for (size_t h = 0; h < occupied.size(); ++h)  // EPW's hour h ends at h:00
     occupied[h] = weather.hours[h].hour > cmd.occupied_from && weather.hours[h].hour <= cmd.occupied_to;
+  AnnualDaylightOptions year;
+  year.occupied = occupied;
+  year.da_threshold = cmd.metrics.da_threshold;
+  year.udi_low = cmd.metrics.udi_supplementary, year.udi_high = cmd.metrics.udi_high;
+  const AnnualDaylight annual = annual_daylight(loaded.scene, atlas, options, skies.hours, year, progress);
+  display.finish();
   const AnnualMetrics metrics = annual_metrics(annual.lux, annual.sun_lux, annual.sensors.size(), occupied, cmd.metrics);
   const AnnualGlare glare = annual_glare(annual, options.views, skies.hours, occupied);
   AnnualRun run;
   run.input = cmd.input, run.weather_file = cmd.weather_file, run.options = cmd.effective;
+  run.name = std::filesystem::path(cmd.input).stem().string();
   run.weather = &weather, run.skies = &skies, run.daylight = &annual, run.metrics = &metrics;
   run.metric_options = &cmd.metrics, run.occupied_from = cmd.occupied_from, run.occupied_to = cmd.occupied_to;
   run.glare = &glare, run.eyes = &options.views;

@@ -40,6 +40,10 @@ void write_work_plane_map(const std::string& path, const WorkPlane& plane, const
   write_false_colour(path, grid, plane.columns, plane.rows, scale, cell);
 }
 
+void write_page_map(const std::string& path, const LightmapPage& page, const FalseColourScale& scale) {
+  write_false_colour(path, page_values(page, 1), page.width, page.height, scale, 1);
+}
+
 ReadingSummary summarise(const std::vector<double>& values) {
   ReadingSummary s;
   s.count = values.size();
@@ -175,7 +179,7 @@ AnalysisFiles write_analysis(const BakeResult& result, const std::string& folder
       FalseColourScale scale = options.scale;
       scale.unit = options.lightmap_is_irradiance ? "lx" : "lm/m2";
       const std::string file = name + "_false_colour_" + std::to_string(p) + ".png";
-      write_false_colour(folder + "/" + file, page_values(page, 1), page.width, page.height, scale, 1);
+      write_page_map(folder + "/" + file, page, scale);
       out.files.push_back(file);
     }
     if (to_percent > 0 && options.lightmap_is_irradiance) {

@@ -51,6 +51,10 @@ std::vector<Sensor> read_sensor_csv(const std::string& path, size_t max_points =
 void write_work_plane_map(const std::string& path, const WorkPlane& plane, const std::vector<double>& values,
                           const FalseColourScale& scale);
 
+// A lightmap page in false colour with a legend: each written texel's value (mean of R, G, B),
+// the padding grey.
+void write_page_map(const std::string& path, const LightmapPage& page, const FalseColourScale& scale);
+
 // Writes into `folder`: sensors.csv (every sensor: position, normal, lux, and the daylight factor
 // in percent when asked), work_plane.png (and work_plane_daylight_factor.png) seen from above
 // with -Z up and +X right, NAME_false_colour_N.png and NAME_daylight_factor_N.png per page, and

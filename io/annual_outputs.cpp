@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "io/analysis_outputs.h"
+#include "io/lightmap_images.h"
 
 namespace radbake {
 namespace {
@@ -60,6 +61,17 @@ std::vector<std::string> write_annual(const AnnualRun& run, const std::string& f
     hours.unit = "";  // hours of the sun's direct light at 1000 lx or more
     write_work_plane_map(folder + "/work_plane_sun_hours.png", a.work_plane, sun_hours, hours);
     files.insert(files.end(), {"work_plane_daylight_autonomy.png", "work_plane_udi_autonomous.png", "work_plane_sun_hours.png"});
+  }
+  for (size_t p = 0; p < a.texel_daylight_autonomy.size(); ++p) {
+    FalseColourScale percent;
+    percent.unit = "%";
+    percent.max = 100;
+    const std::string n = std::to_string(p);
+    write_page_map(folder + "/" + run.name + "_daylight_autonomy_" + n + ".png", a.texel_daylight_autonomy[p], percent);
+    write_page_map(folder + "/" + run.name + "_udi_" + n + ".png", a.texel_udi[p], percent);
+    write_exr(folder + "/" + run.name + "_mean_lux_" + n + ".exr", a.texel_mean_lux[p]);
+    files.insert(files.end(), {run.name + "_daylight_autonomy_" + n + ".png", run.name + "_udi_" + n + ".png",
+                               run.name + "_mean_lux_" + n + ".exr"});
   }
   nlohmann::ordered_json views = nlohmann::ordered_json::array();
   if (run.glare && !run.eyes->empty()) {

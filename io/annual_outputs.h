@@ -16,6 +16,7 @@ namespace radbake {
 
 struct AnnualRun {
   std::string input, weather_file;
+  std::string name;  // the scene's, for the texel maps' files
   std::vector<std::pair<std::string, std::string>> options;
   const Weather* weather = nullptr;
   const AnnualSkies* skies = nullptr;
@@ -33,7 +34,9 @@ struct AnnualRun {
 // sensors for the file's first hour, then the next), annual_sensors.csv (position, normal, DA,
 // UDI bins in percent of the occupied hours, sun hours), with a work plane
 // work_plane_daylight_autonomy.png, work_plane_udi_autonomous.png and work_plane_sun_hours.png,
-// with eyes annual_dgp.f32 (float32, hour-major, eye by eye), then report.json. Returns the files written, relative to the folder.
+// with eyes annual_dgp.f32 (float32, hour-major, eye by eye), per lightmap page
+// NAME_daylight_autonomy_N.png, NAME_udi_N.png (percent) and NAME_mean_lux_N.exr, then
+// report.json. Returns the files written, relative to the folder.
 std::vector<std::string> write_annual(const AnnualRun& run, const std::string& folder);
 
 }  // namespace radbake

@@ -67,6 +67,10 @@ TEST(AnnualCli, AYearAtThreeSensorsWritesTheSeriesTheMetricsAndTheReport) {
   EXPECT_NEAR(report["metrics"]["sDA_percent"].get<double>(), 100.0 * double(autonomous) / 3, 1e-9);
   EXPECT_NEAR(report["metrics"]["ASE_percent"].get<double>(), 100.0 * double(sunny) / 3, 1e-9);
 
+  // Every texel's year, as lightmap pages.
+  for (const char* file : {"/out/classroom_daylight_autonomy_0.png", "/out/classroom_udi_0.png", "/out/classroom_mean_lux_0.exr"})
+    EXPECT_FALSE(test::slurp(folder + file).empty()) << file;
+
   // The eye mid-room facing the south windows: its hourly DGP, and how often it glares.
   EXPECT_EQ(test::slurp(folder + "/out/annual_dgp.f32").size(), 8760u * sizeof(float));
   ASSERT_EQ(report["views"].size(), 1u);
