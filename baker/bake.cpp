@@ -280,6 +280,7 @@ BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& optio
       for (const EyeView& eye : options.views) {
         result.views.push_back(render_fisheye(eye, options.view, elements, exitance, surface, *tracer, options.sky, options.seed));
         result.glare.push_back(evaluate_glare(result.views.back()));
+        result.perspectives.push_back(render_perspective(eye, options.view, elements, exitance, surface, *tracer, options.sky, options.seed));
       }
       return 0;
     });

@@ -115,6 +115,7 @@ struct BakeResult {
   std::vector<Sensor> sensors;                     // BakeOptions::sensors, then the work plane's
   std::vector<double> sensor_lux;                  // per sensor
   std::vector<FisheyeImage> views;                 // per BakeOptions::views
+  std::vector<PerspectiveImage> perspectives;      // per BakeOptions::views, the same eye
   std::vector<Glare> glare;                        // per view
   WorkPlane work_plane;                            // its sensor_at indexes `sensors`
   BakeReport report;

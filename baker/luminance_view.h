@@ -26,10 +26,23 @@ struct EyeView {
 struct ViewOptions {
   int size = 512;              // fisheye pixels per side (180 degrees)
   uint32_t rays_per_pixel = 4; // spread over the pixel
+  // The perspective image beside it: width (height 3/4 of it) and horizontal field of view.
+  int perspective_width = 640;
+  double perspective_fov = 70;  // degrees
+};
+
+// A perspective luminance image, rows top to bottom, cd/m2.
+struct PerspectiveImage {
+  int width = 0, height = 0;
+  std::vector<float> luminance;
 };
 
 // `exitance` per element, lm/m2 (emission plus reflected light, the mean of R, G and B is taken);
 // `sky` may be disabled.
+PerspectiveImage render_perspective(const EyeView& eye, const ViewOptions& options, const Elements& elements,
+                                    const std::vector<Rgb>& exitance, const Surface& surface, const RayTracer& tracer,
+                                    const SkyLight& sky, uint64_t seed);
+
 FisheyeImage render_fisheye(const EyeView& eye, const ViewOptions& options, const Elements& elements,
                             const std::vector<Rgb>& exitance, const Surface& surface, const RayTracer& tracer,
                             const SkyLight& sky, uint64_t seed);

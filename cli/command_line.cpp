@@ -282,6 +282,8 @@ annual options (bake): a year of daylight at the sensors by daylight coefficient
                           occupied hours over 0.35, 0.40 and 0.45
   --occupied FROM-TO      occupied hours, local standard time (default 8-18, IES LM-83)
   --da-threshold LUX      daylight autonomy's illuminance (default 300)
+  --sky-subdivision M     the sky patches the surfaces' light is solved for: 1, Tregenza's 145
+                          (default); 2 or 4, Reinhart's 577 or 2305 (finer, slower)
 
 view options: a page on 127.0.0.1 showing OUTDIR's bake in three.js (and OUTDIR_B's beside it);
 it serves the page, three.js and the two folders' files, nothing else
@@ -663,6 +665,7 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
          if (b.occupied_to <= b.occupied_from) throw UsageError("option --occupied must end after it starts" + got(v));
        }},
       {"--da-threshold", [&](const std::string& v) { b.metrics.da_threshold = parse_number("--da-threshold", v, 1, 1e6); }},
+      {"--sky-subdivision", [&](const std::string& v) { b.sky_subdivision = int(parse_integer("--sky-subdivision", v, 1, 4)); }},
       {"--sensor-rays", [&](const std::string& v) { b.bake.sensor.rays = uint32_t(parse_integer("--sensor-rays", v, 1, 1 << 24)); }},
       {"--work-plane-height", [&](const std::string& v) {
          b.bake.work_plane.height = parse_number("--work-plane-height", v, 0, 1000);
@@ -803,6 +806,7 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
       {"weather", b.weather_file.empty() ? "none" : b.weather_file},
       {"occupied", number(b.occupied_from) + "-" + number(b.occupied_to)},
       {"da-threshold", number(b.metrics.da_threshold)},
+      {"sky-subdivision", number(b.sky_subdivision)},
       {"false-colour", !b.analysis.false_colour_pages ? "none" : b.analysis.scale.logarithmic ? "log" : "linear"},
       {"false-colour-max", b.analysis.scale.max > 0 ? number(b.analysis.scale.max) : "auto"},
       {"glazing-transmittance", b.bake.glazing_transmittance >= 0 ? number(b.bake.glazing_transmittance) : "clear pane"},

@@ -41,6 +41,7 @@ struct BakeCommand {
   // A year of daylight (--weather): daylight coefficients at the sensors for every hour of the file.
   std::string weather_file;
   int occupied_from = 8, occupied_to = 18;  // occupied hours, local standard time: from FROM:00 to TO:00
+  int sky_subdivision = 1;                  // 1: Tregenza's 145 sky patches; m: Reinhart's MF:m
   AnnualMetricsOptions metrics;
   float png_scale = 0;  // 0: automatic
   DisplayMode display = DisplayMode::Page;

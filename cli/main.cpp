@@ -167,6 +167,7 @@ int run_annual(const radbake::BakeCommand& cmd) {
   year.occupied = occupied;
   year.da_threshold = cmd.metrics.da_threshold;
   year.udi_low = cmd.metrics.udi_supplementary, year.udi_high = cmd.metrics.udi_high;
+  year.sky_subdivision = cmd.sky_subdivision;
   const AnnualDaylight annual = annual_daylight(loaded.scene, atlas, options, skies.hours, year, progress);
   display.finish();
   const AnnualMetrics metrics = annual_metrics(annual.lux, annual.sun_lux, annual.sensors.size(), occupied, cmd.metrics);

@@ -172,6 +172,16 @@ AnalysisFiles write_analysis(const BakeResult& result, const std::string& folder
       }
     write_false_colour(folder + "/" + png, values, image.size, image.size, scale, 1);
     out.files.insert(out.files.end(), {exr, png});
+    // The same eye in perspective, for looking at.
+    const PerspectiveImage& flat = result.perspectives[v];
+    LightmapPage flat_page;
+    flat_page.width = flat.width, flat_page.height = flat.height;
+    flat_page.valid.assign(flat.luminance.size(), 1);
+    for (float l : flat.luminance) flat_page.texels.push_back(Rgb{l, l, l});
+    const std::string flat_exr = "view_" + std::to_string(v) + "_perspective.exr", flat_png = "view_" + std::to_string(v) + "_perspective.png";
+    write_exr(folder + "/" + flat_exr, flat_page);
+    write_false_colour(folder + "/" + flat_png, flat.luminance, flat.width, flat.height, scale, 1);
+    out.files.insert(out.files.end(), {flat_exr, flat_png});
   }
   for (size_t p = 0; p < result.pages.size(); ++p) {
     const LightmapPage& page = result.pages[p];

@@ -59,7 +59,7 @@ void write_page_map(const std::string& path, const LightmapPage& page, const Fal
 // in percent when asked), work_plane.png (and work_plane_daylight_factor.png) seen from above
 // with -Z up and +X right, NAME_false_colour_N.png and NAME_daylight_factor_N.png per page, and
 // per view view_N.exr (its fisheye luminance, cd/m2) and view_N.png (the same in false colour,
-// four decades).
+// four decades), and view_N_perspective.exr and .png (the eye in perspective, 70 degrees across).
 AnalysisFiles write_analysis(const BakeResult& result, const std::string& folder, const std::string& name,
                              const AnalysisOptions& options);
 

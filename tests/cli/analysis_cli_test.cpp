@@ -215,7 +215,8 @@ TEST(GlareCli, AViewWritesItsFisheyeAndReportsItsDgp) {
   EXPECT_LT(north["dgp"].get<double>(), 0.35) << north.dump();
   EXPECT_GT(south["vertical_illuminance_lux"].get<double>(), 5 * north["vertical_illuminance_lux"].get<double>());
   EXPECT_GT(south["glare_sources"].size(), 0u);
-  for (const char* file : {"/view_0.exr", "/view_0.png", "/view_1.exr", "/view_1.png"})
+  for (const char* file : {"/view_0.exr", "/view_0.png", "/view_1.exr", "/view_1.png", "/view_0_perspective.exr",
+                           "/view_0_perspective.png"})
     EXPECT_FALSE(test::slurp(out + file).empty()) << file;
   test::expect_one_line_refusal(test::radbake("bake " + test::source_path("samples/classroom/classroom.gltf") + " -o " +
                                               out + "2 --view 1,2,3"),
