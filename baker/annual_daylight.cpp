@@ -98,13 +98,8 @@ double direct_sun(const Sensor& s, size_t index, const SkyView& view, const Surf
 double sun_seen(const Sensor& eye, const SkyView& view, const Surface& surface, const RayTracer& tracer,
                 uint32_t sun_rays, uint64_t seed) {
   if (!(dot(sun_direction(view.sky()), eye.normal) > 0)) return 0;
-  const Vec3 origin = sensor_origin(eye.position, eye.normal, surface.scene_extent);
   Rng rng(seed, Stream::View, uint64_t(-2));
-  const uint32_t pattern = rng.next_u32();
-  double seen = 0;
-  for (uint32_t k = 0; k < sun_rays; ++k)
-    seen += tracer.transmittance(origin, view.toward_sun(cmj_sample(k, sun_rays, pattern)), 0.0f, INFINITY);
-  return seen / sun_rays;
+  return sun_disc_seen(view, tracer, sensor_origin(eye.position, eye.normal, surface.scene_extent), sun_rays, rng.next_u32());
 }
 
 // Each texel's year from its coefficients, over the occupied daylit hours, into pages.

@@ -32,12 +32,8 @@ struct Seeing {
 
   // The share of the sun's disc seen from the eye (0 when the sun is down or there is none).
   double sun_seen(uint64_t seed) const {
-    if (!sky.enabled || !view.sun_up()) return 0;
     Rng rng(seed, Stream::View, uint64_t(-1));
-    const uint32_t pattern = rng.next_u32(), rays = std::max<uint32_t>(1, sky.sun_rays);
-    double seen = 0;
-    for (uint32_t k = 0; k < rays; ++k) seen += tracer.transmittance(origin, view.toward_sun(cmj_sample(k, rays, pattern)), 0.0f, INFINITY);
-    return seen / rays;
+    return sun_disc_seen(view, tracer, origin, sky.sun_rays, rng.next_u32());
   }
 };
 

@@ -53,6 +53,14 @@ Vec3 SkyView::toward_sun(Vec2 u) const {
   return normalize(sun_ + (sun_t_ * float(std::cos(turn)) + sun_b_ * float(std::sin(turn))) * float(std::tan(radius)));
 }
 
+double sun_disc_seen(const SkyView& view, const RayTracer& tracer, Vec3 origin, uint32_t rays, uint32_t pattern) {
+  if (!view.sky().enabled || !view.sun_up()) return 0;
+  rays = std::max<uint32_t>(1, rays);
+  double seen = 0;
+  for (uint32_t k = 0; k < rays; ++k) seen += tracer.transmittance(origin, view.toward_sun(cmj_sample(k, rays, pattern)), 0.0f, INFINITY);
+  return seen / rays;
+}
+
 namespace {
 
 // A point's sky rays: cosine-distributed over its hemisphere, and shadow rays to the sun's disc.

@@ -73,6 +73,10 @@ struct SkyRayPatterns {
 // at height 0) does not see the surface it lies on.
 inline Vec3 sensor_origin(Vec3 position, Vec3 normal, float scene_extent) { return position + normal * (1e-6f * scene_extent); }
 
+// The share of the sun's disc seen from `origin`: `rays` shadow rays spread over the disc by
+// `pattern`, each counting what of it passes (glazing); 0 when the sun is down or absent.
+double sun_disc_seen(const SkyView& view, const RayTracer& tracer, Vec3 origin, uint32_t rays, uint32_t pattern);
+
 // At points in the air (sensors) facing `normals`, lux; each point's rays all start at it.
 std::vector<double> sky_illuminance_at(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
                                        const RayTracer& tracer, const SkyLight& sky, uint64_t seed);

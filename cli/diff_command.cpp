@@ -10,6 +10,7 @@
 #include "baker/errors.h"
 #include "io/annual_comparison.h"
 #include "io/bake_lightmaps.h"
+#include "io/false_colour.h"
 #include "io/lightmap_images.h"
 
 namespace radbake {
@@ -109,13 +110,10 @@ int run_annual_diff(const DiffCommand& cmd) {
                      cmd.candidate + " are years of daylight");
   const AnnualFolder a = read_annual_folder(cmd.reference), b = read_annual_folder(cmd.candidate);
   const std::vector<double> change = daylight_autonomy_change(a, b);
-  // Full colour at the largest change, rounded up to 1, 2 or 5 x 10^k points (at least 1).
+  // Full colour at the largest change, rounded up as the legends' scales are (at least 1 point).
   double largest = 0;
   for (double c : change) largest = std::max(largest, std::fabs(c));
-  double full_colour = 1;
-  for (double decade = 1; full_colour < largest; decade *= 10)
-    for (double step : {1.0, 2.0, 5.0})
-      if (full_colour < largest) full_colour = step * decade;
+  const double full_colour = nice_number_at_or_above(std::max(1.0, largest));
   std::vector<std::string> images;
   if (!cmd.image_folder.empty()) {
     std::filesystem::create_directories(cmd.image_folder);

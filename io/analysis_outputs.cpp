@@ -28,6 +28,15 @@ std::vector<float> page_values(const LightmapPage& page, double factor) {
   return values;
 }
 
+// An image of one value per pixel as a page of grey texels, for write_exr.
+LightmapPage grey_page(int width, int height, const std::vector<float>& values) {
+  LightmapPage page;
+  page.width = width, page.height = height;
+  page.valid.assign(values.size(), 1);
+  for (float v : values) page.texels.push_back(Rgb{v, v, v});
+  return page;
+}
+
 }  // namespace
 
 void write_work_plane_map(const std::string& path, const WorkPlane& plane, const std::vector<double>& values,
@@ -153,12 +162,8 @@ AnalysisFiles write_analysis(const BakeResult& result, const std::string& folder
     const FisheyeImage& image = result.views[v];
     const Glare& glare = result.glare[v];
     out.views.push_back({options.views[v], glare});
-    LightmapPage page;
-    page.width = page.height = image.size;
-    page.valid.assign(image.luminance.size(), 1);
-    for (float l : image.luminance) page.texels.push_back(Rgb{l, l, l});
     const std::string exr = "view_" + std::to_string(v) + ".exr", png = "view_" + std::to_string(v) + ".png";
-    write_exr(folder + "/" + exr, page);
+    write_exr(folder + "/" + exr, grey_page(image.size, image.size, image.luminance));
     FalseColourScale scale;
     scale.logarithmic = true;
     scale.decades = 4;
@@ -174,12 +179,8 @@ AnalysisFiles write_analysis(const BakeResult& result, const std::string& folder
     out.files.insert(out.files.end(), {exr, png});
     // The same eye in perspective, for looking at.
     const PerspectiveImage& flat = result.perspectives[v];
-    LightmapPage flat_page;
-    flat_page.width = flat.width, flat_page.height = flat.height;
-    flat_page.valid.assign(flat.luminance.size(), 1);
-    for (float l : flat.luminance) flat_page.texels.push_back(Rgb{l, l, l});
     const std::string flat_exr = "view_" + std::to_string(v) + "_perspective.exr", flat_png = "view_" + std::to_string(v) + "_perspective.png";
-    write_exr(folder + "/" + flat_exr, flat_page);
+    write_exr(folder + "/" + flat_exr, grey_page(flat.width, flat.height, flat.luminance));
     write_false_colour(folder + "/" + flat_png, flat.luminance, flat.width, flat.height, scale, 1);
     out.files.insert(out.files.end(), {flat_exr, flat_png});
   }

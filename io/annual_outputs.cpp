@@ -16,20 +16,22 @@ void check(std::ostream& out, const std::string& path) {
   if (!out) throw std::runtime_error("cannot write " + path);
 }
 
+// Little-endian float32, as the machine holds them (x86 and ARM both are).
+void write_floats(const std::string& path, const std::vector<float>& values) {
+  static_assert(sizeof(float) == 4, "float32");
+  std::ofstream out(path, std::ios::binary);
+  out.write(reinterpret_cast<const char*>(values.data()), std::streamsize(values.size() * sizeof(float)));
+  check(out, path);
+}
+
 }  // namespace
 
 std::vector<std::string> write_annual(const AnnualRun& run, const std::string& folder) {
   const AnnualDaylight& a = *run.daylight;
   const AnnualMetrics& m = *run.metrics;
   std::vector<std::string> files;
-  {
-    const std::string path = folder + "/annual_illuminance.f32";
-    std::ofstream out(path, std::ios::binary);
-    static_assert(sizeof(float) == 4, "float32");
-    out.write(reinterpret_cast<const char*>(a.lux.data()), std::streamsize(a.lux.size() * sizeof(float)));
-    check(out, path);
-    files.push_back("annual_illuminance.f32");
-  }
+  write_floats(folder + "/annual_illuminance.f32", a.lux);
+  files.push_back("annual_illuminance.f32");
   {
     const std::string path = folder + "/annual_sensors.csv";
     std::ofstream csv(path);
@@ -75,10 +77,7 @@ std::vector<std::string> write_annual(const AnnualRun& run, const std::string& f
   }
   nlohmann::ordered_json views = nlohmann::ordered_json::array();
   if (run.glare && !run.eyes->empty()) {
-    const std::string path = folder + "/annual_dgp.f32";
-    std::ofstream out(path, std::ios::binary);
-    out.write(reinterpret_cast<const char*>(run.glare->dgp.data()), std::streamsize(run.glare->dgp.size() * sizeof(float)));
-    check(out, path);
+    write_floats(folder + "/annual_dgp.f32", run.glare->dgp);
     files.push_back("annual_dgp.f32");
     for (size_t e = 0; e < run.eyes->size(); ++e) {
       const EyeView& eye = (*run.eyes)[e];

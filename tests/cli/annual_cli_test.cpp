@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -117,6 +118,30 @@ TEST(AnnualCli, WhatAYearCannotBeRunWithIsOneLine) {
                                 "--occupied must end after it starts", out);
   test::expect_one_line_refusal(test::radbake("bake " + scene + " -o " + out + " --work-plane --weather " + folder + "/none.epw"),
                                 "cannot read weather file", out);
+}
+
+TEST(AnnualCli, DiffRefusesYearsItCannotCompareWithOneLine) {
+  // Hand-written year folders: one without its sensors' file, two measured at different sensors,
+  // and a year against a plain bake folder.
+  const std::string root = test::fresh_folder("annual_diff_refusals");
+  auto year = [&](const std::string& name, const std::string& csv) {
+    std::filesystem::create_directories(root + "/" + name);
+    std::ofstream(root + "/" + name + "/report.json") << R"({"series": {}, "metrics": {"sDA_percent": 50}})";
+    if (!csv.empty()) std::ofstream(root + "/" + name + "/annual_sensors.csv") << "x,y,z,nx,ny,nz,da\n" << csv;
+    return root + "/" + name;
+  };
+  const std::string bare = year("bare", ""), one = year("one", "1,0.8,1,0,1,0,50\n"),
+                    two = year("two", "1,0.8,1,0,1,0,50\n2,0.8,1,0,1,0,60\n");
+  std::filesystem::create_directories(root + "/bake");
+  std::ofstream(root + "/bake/report.json") << R"({"lightmaps": {}})";
+  const struct {
+    std::string a, b, says;
+  } cases[] = {{one, bare, "has no annual_sensors.csv"},
+               {one, two, "were measured at different sensors (1 and 2)"},
+               {one, root + "/bake", "is a year of daylight and the other a bake"}};
+  for (const auto& c : cases)
+    test::expect_one_line_refusal(test::radbake("diff " + c.a + " " + c.b + " --diff-images " + root + "/maps"), c.says,
+                                  root + "/maps");
 }
 
 }  // namespace
