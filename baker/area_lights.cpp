@@ -100,15 +100,16 @@ double polygon_form_factor(Vec3 x, Vec3 n, const Vec3* polygon, int count) {
 
 std::vector<Rgb> emitter_irradiance(const Elements& e, const Surface& surface, const MaterialSampler& materials,
                                     const RayTracer& tracer, const DirectLightOptions& options, uint64_t seed,
-                                    Progress& progress) {
-  std::vector<Rgb> irradiance(e.size());
+                                    Progress& progress, ElementRange range) {
+  range = range.within(e.size());
+  std::vector<Rgb> irradiance(range.size());
   const std::vector<Emitter> emitters = collect_emitters(surface, materials);
   if (emitters.empty()) return irradiance;
   // Rays are shared out among the emitters by their unoccluded contribution, so a hundred small
   // emitting triangles cost about what one bright one does (at most about twice the budget).
   const int budget = 2 * std::max(1, options.area_light_rays);
-  progress.begin("area lights", e.size());
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, e.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
+  progress.begin("area lights", range.size());
+  tbb::parallel_for(tbb::blocked_range<size_t>(range.begin, range.end, 64), [&](const tbb::blocked_range<size_t>& r) {
     std::vector<double> factor(emitters.size());
     for (size_t i = r.begin(); i < r.end(); ++i) {
       if (!e.valid(i)) continue;
@@ -211,7 +212,7 @@ std::vector<Rgb> emitter_irradiance(const Elements& e, const Surface& surface, c
         if (probe >= rays || (visible > 0 && hidden > 0)) trace(rays, full_patterns);
         if (weights > 0) h += seen * float(factor[k] / weights);
       }
-      irradiance[i] = h;
+      irradiance[i - range.begin] = h;
     }
     progress.advance(r.size());
   });

@@ -1,20 +1,24 @@
 #include "baker/bake.h"
 
 #include <malloc.h>
+#include <sys/resource.h>
 #include <tbb/global_control.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <thread>
 
+#include "baker/byte_stream.h"
 #include "baker/errors.h"
 #include "baker/final_gather.h"
 #include "baker/finite_checks.h"
 #include "baker/material_sampler.h"
 #include "baker/patch_transport.h"
 #include "baker/ray_tracer.h"
+#include "baker/shared_stage.h"
 #include "baker/surface.h"
 
 namespace radbake {
@@ -46,6 +50,12 @@ std::vector<Rgb> radiosity_of(const Elements& elements, const std::vector<Rgb>& 
   return radiosity;
 }
 
+uint64_t peak_resident_bytes() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return uint64_t(usage.ru_maxrss) * 1024;
+}
+
 std::string percent(double fraction) {
   char text[32];
   std::snprintf(text, sizeof text, "%.3g%%", 100 * fraction);
@@ -61,6 +71,182 @@ PlanDecision solve_outcome(const RadiositySolution& s, const SolveOptions& optio
     return {"interreflection", "stopped after " + what, unshot + ", within the tolerance of " + percent(options.tolerance)};
   return {"interreflection", "stopped after " + what + " by the iteration guard",
           unshot + ", above the tolerance of " + percent(options.tolerance)};
+}
+
+// Direct light from lights, the sky and emitting surfaces, in chunks of texels shared by the team;
+// every process gets all of it (the form factors and the gather read it anywhere). Also the lm,
+// mean of RGB, that punctual lights and the sky land on valid elements (where light passes
+// through, only what stops there: the rest lands further on), summed chunk by chunk.
+std::vector<Rgb> shared_direct_light(const Scene& scene, const Elements& elements, const Surface& surface,
+                                     const MaterialSampler& materials, const RayTracer& tracer,
+                                     const BakeOptions& options, const EffectPlan& plan, Progress& progress,
+                                     double& delivered_power) {
+  DirectLightOptions direct = options.direct;
+  direct.shadow_rays = plan.shadow_rays;
+  direct.cull_unlit = !plan.exhaustive;
+  direct.light_traced = plan.light_traced;
+  const size_t n = elements.size();
+  const std::vector<size_t> starts = chunk_starts(n, n / 256, 1024, 256, {});
+  std::vector<Rgb> irradiance(n);
+  std::vector<double> delivered(starts.size() - 1, 0.0);
+  SharedStage stage;
+  stage.name = "direct light";
+  stage.chunks = starts.size() - 1;
+  stage.results_to_all = true;
+  stage.compute = [&](size_t chunk) {
+    const ElementRange range{starts[chunk], starts[chunk + 1]};
+    Progress quiet;
+    std::vector<Rgb> lights_and_sky =
+        punctual_irradiance(elements, surface, scene.lights, tracer, direct, options.seed, quiet, range);
+    if (options.sky.enabled) {
+      const std::vector<Rgb> sky = sky_irradiance(elements, surface, tracer, options.sky, options.seed, quiet, range);
+      for (size_t k = 0; k < range.size(); ++k) lights_and_sky[k] += sky[k];
+    }
+    std::vector<Rgb> total = emitter_irradiance(elements, surface, materials, tracer, direct, options.seed, quiet, range);
+    double power = 0;
+    for (size_t k = 0; k < range.size(); ++k) {
+      const size_t i = range.begin + k;
+      const double stops = elements.opacity.empty() ? 1.0 : elements.opacity[i];
+      if (elements.valid(i)) power += stops * double(sum(lights_and_sky[k])) / 3.0 * elements.area[i];
+      total[k] += lights_and_sky[k];
+    }
+    ByteWriter out;
+    out.put(power);
+    out.put_vector(total);
+    return out.bytes();
+  };
+  stage.take = [&](size_t chunk, const Bytes& result) {
+    ByteReader in(result);
+    delivered[chunk] = in.get<double>();
+    const std::vector<Rgb> values = in.get_vector<Rgb>();
+    if (values.size() != starts[chunk + 1] - starts[chunk]) throw TruncatedBytes();
+    std::copy(values.begin(), values.end(), irradiance.begin() + std::ptrdiff_t(starts[chunk]));
+  };
+  run_shared_stage(stage, *options.sharing.team, options.sharing.store, options.sharing.resume, tracer, progress);
+  delivered_power = 0;
+  for (double d : delivered) delivered_power += d;
+  return irradiance;
+}
+
+// The chunks of a gather slice: whole pages, or runs of texels, in `count` parts of about equal
+// numbers of gathering elements.
+std::vector<size_t> slice_chunks(const Elements& elements, const Patches& patches, const std::vector<size_t>& starts,
+                                 const GatherSlice& slice) {
+  const size_t chunks = starts.size() - 1;
+  std::vector<double> weight(chunks, 0.0);
+  double total = 0;
+  for (size_t c = 0; c < chunks; ++c) {
+    for (size_t i = starts[c]; i < starts[c + 1]; ++i)
+      weight[c] += elements.valid(i) && patches.patch_of_element[i] != UINT32_MAX;
+    total += weight[c];
+  }
+  std::vector<size_t> wanted;
+  double before = 0;
+  for (size_t c = 0; c < chunks;) {
+    // A page's chunks go together when slicing by pages.
+    size_t end = c + 1;
+    if (slice.by == GatherSlice::By::Pages)
+      while (end < chunks && elements.page[starts[end]] == elements.page[starts[c]]) ++end;
+    double w = 0;
+    for (size_t k = c; k < end; ++k) w += weight[k];
+    const int part = total > 0 ? std::min(slice.count - 1, int((before + w / 2) / total * slice.count)) : 0;
+    if (part == slice.index)
+      for (size_t k = c; k < end; ++k) wanted.push_back(k);
+    before += w;
+    c = end;
+  }
+  return wanted;
+}
+
+std::string slice_stage_name(int index, int count) {
+  return "final gather, slice " + std::to_string(index + 1) + " of " + std::to_string(count);
+}
+
+// The final gather in chunks of texels (never across a page) shared by the team; the first
+// process joins them and finishes the gather (finish_gather). The others, and a run that bakes a
+// slice (then StoppedEarly), get nothing. With merge_slices, the chunks come from the slices saved
+// in the store instead.
+std::optional<GatheredLight> shared_gather(const Elements& elements, const Patches& patches, const Surface& surface,
+                                           const RayTracer& tracer, const PatchTransport& transport,
+                                           const std::vector<Rgb>& patch_exitance, const std::vector<Rgb>& direct,
+                                           const BakeOptions& options, Progress& progress, GatherStats* stats) {
+  const Sharing& sharing = options.sharing;
+  Team& team = *sharing.team;
+  ByteWriter indirect;
+  if (team.first()) indirect.put_vector(gathered_irradiance(patches, transport, patch_exitance));
+  team.broadcast_from_first("final gather", indirect.bytes());
+  const GatherInputs inputs =
+      gather_inputs(elements, patches, surface, ByteReader(indirect.bytes()).get_vector<Rgb>());
+  const size_t n = elements.size();
+  std::vector<size_t> page_starts;
+  for (size_t i = 1; i < n; ++i)
+    if (elements.page[i] != elements.page[i - 1]) page_starts.push_back(i);
+  const std::vector<size_t> starts = chunk_starts(n, n / 256, 1024, 256, page_starts);
+  const size_t chunks = starts.size() - 1;
+  GatherTrace whole;
+  std::vector<std::vector<NearLanding>> landings(chunks);
+  if (team.first()) {
+    whole.irradiance.resize(n);
+    whole.harmonic_distance.assign(n, INFINITY);
+  }
+  SharedStage stage;
+  stage.name = "final gather";
+  stage.chunks = chunks;
+  stage.compute = [&](size_t chunk) {
+    const GatherTrace t = trace_gather(elements, patches, surface, tracer, inputs, patch_exitance, direct,
+                                       options.gather_rays, options.near_field, options.seed,
+                                       ElementRange{starts[chunk], starts[chunk + 1]});
+    ByteWriter out;
+    out.put_vector(t.irradiance);
+    out.put_vector(t.harmonic_distance);
+    out.put_vector(t.landings);
+    out.put(t.lost);
+    out.put(t.cast);
+    return out.bytes();
+  };
+  stage.take = [&](size_t chunk, const Bytes& result) {
+    ByteReader in(result);
+    const std::vector<Rgb> irradiance = in.get_vector<Rgb>();
+    const std::vector<float> distance = in.get_vector<float>();
+    landings[chunk] = in.get_vector<NearLanding>();
+    const size_t count = starts[chunk + 1] - starts[chunk];
+    if (irradiance.size() != count || distance.size() != count) throw TruncatedBytes();
+    for (const NearLanding& l : landings[chunk])
+      if (l.receiver < starts[chunk] || l.receiver >= starts[chunk + 1] || l.struck >= n) throw TruncatedBytes();
+    std::copy(irradiance.begin(), irradiance.end(), whole.irradiance.begin() + std::ptrdiff_t(starts[chunk]));
+    std::copy(distance.begin(), distance.end(), whole.harmonic_distance.begin() + std::ptrdiff_t(starts[chunk]));
+    whole.lost += in.get<uint64_t>();
+    whole.cast += in.get<uint64_t>();
+  };
+  if (sharing.merge_slices > 0) {
+    if (team.first()) {
+      std::vector<uint8_t> taken(chunks, 0);
+      for (int k = 0; k < sharing.merge_slices; ++k) {
+        const std::string name = slice_stage_name(k, sharing.merge_slices);
+        std::optional<Bytes> saved = sharing.store->load(name + " waves");
+        if (!saved) throw InputError("the checkpoint holds no " + name + ": bake it with --pages or --texel-range " +
+                                     std::to_string(k + 1) + "/" + std::to_string(sharing.merge_slices));
+        for (size_t c : take_saved_stage(stage, *saved)) {
+          if (taken[c]) throw InputError("the checkpoint's slices overlap: slice " + std::to_string(k + 1) +
+                                         " bakes texels another has baked (slices of different kinds?)");
+          taken[c] = 1;
+        }
+      }
+      if (std::count(taken.begin(), taken.end(), uint8_t(1)) != std::ptrdiff_t(chunks))
+        throw InputError("the checkpoint's slices do not cover every texel: a slice was stopped before it ended");
+    }
+  } else {
+    if (sharing.slice.by != GatherSlice::By::Everything) {
+      stage.name = slice_stage_name(sharing.slice.index, sharing.slice.count);
+      stage.only = slice_chunks(elements, patches, starts, sharing.slice);
+    }
+    run_shared_stage(stage, team, sharing.store, sharing.resume, tracer, progress);
+    if (sharing.slice.by != GatherSlice::By::Everything) throw StoppedEarly(stage.name);
+  }
+  if (!team.first()) return std::nullopt;
+  for (const auto& l : landings) whole.landings.insert(whole.landings.end(), l.begin(), l.end());
+  return finish_gather(elements, patches, transport, inputs, patch_exitance, direct, options.gather_rays,
+                       options.near_field, std::move(whole), stats);
 }
 
 // Light between surfaces: patches, form factors and the radiosity solve, then the final gather
@@ -86,9 +272,11 @@ void interreflect(const Elements& elements, const Surface& surface, const RayTra
   SolveOptions solve = options.solve;
   if (plan.one_channel) solve.one_channel_colour = plan.light_colour;
   auto started = std::chrono::steady_clock::now();
+  Team& team = *options.sharing.team;
   Interreflection light_between = solve_interreflection(elements, surface, tracer, result.direct, options.patches,
                                                         options.form_factors, options.subdivision, solve, options.seed,
-                                                        progress, observer);
+                                                        progress, observer, options.sharing);
+  if (options.sharing.stop_after == StopAfter::Radiosity) throw StoppedEarly("radiosity");
   const double interreflection_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   report.stage_times.push_back({"patches", interreflection_seconds - light_between.form_factor_seconds -
@@ -98,18 +286,18 @@ void interreflect(const Elements& elements, const Surface& surface, const RayTra
   malloc_trim(0);
   const Patches& patches = light_between.patches;
   const RadiositySolution& solution = light_between.solution;
-  check_patches("the radiosity solve", patches, light_between.transport, solution.exitance, checked);
+  if (team.first()) check_patches("the radiosity solve", patches, light_between.transport, solution.exitance, checked);
   GatherStats gather_stats;
   StageClock clock(report.stage_times);
-  GatheredLight gathered = clock.run("final gather", [&] {
-    return gather_indirect(elements, patches, surface, tracer, light_between.transport, solution.exitance,
-                           result.direct, options.gather_rays, options.near_field, options.seed, progress,
-                           &gather_stats);
+  std::optional<GatheredLight> gathered = clock.run("final gather", [&] {
+    return shared_gather(elements, patches, surface, tracer, light_between.transport, solution.exitance, result.direct,
+                         options, progress, &gather_stats);
   });
+  if (!gathered) return;
   result.irradiance = clock.run("gather filter", [&] {
     std::vector<uint8_t> gathering(elements.size());
     for (size_t i = 0; i < elements.size(); ++i) gathering[i] = patches.patch_of_element[i] != UINT32_MAX;
-    return filter_gathered(elements, surface, gathered.irradiance, gathered.harmonic_distance, gathering,
+    return filter_gathered(elements, surface, gathered->irradiance, gathered->harmonic_distance, gathering,
                            options.gather_filter);
   });
   check_element_values("the final gather", result.irradiance, checked, patches.patch_of_element);
@@ -138,32 +326,12 @@ void compute_radiosity(const Scene& scene, const Elements& elements, const Surfa
                        const EffectPlan& plan, const FiniteCheckContext& checked, Progress& progress,
                        const PreviewCallback& on_preview, BakeResult& result) {
   StageClock clock(result.report.stage_times);
-  DirectLightOptions direct = options.direct;
-  direct.shadow_rays = plan.shadow_rays;
-  direct.cull_unlit = !plan.exhaustive;
-  direct.light_traced = plan.light_traced;
-  std::vector<Rgb> lights_and_sky = clock.run("punctual lights", [&] {
-    return punctual_irradiance(elements, surface, scene.lights, tracer, direct, options.seed, progress);
-  });
-  if (options.sky.enabled) {
-    const std::vector<Rgb> sky = clock.run("sky", [&] {
-      return sky_irradiance(elements, surface, tracer, options.sky, options.seed, progress);
-    });
-    for (size_t i = 0; i < elements.size(); ++i) lights_and_sky[i] += sky[i];
-  }
-  result.direct = clock.run("area lights", [&] {
-    return emitter_irradiance(elements, surface, materials, tracer, direct, options.seed, progress);
-  });
-  // lm, mean of RGB, that punctual lights and the sky land on valid elements (where light passes
-  // through, only what stops there: the rest lands further on)
   double delivered_power = 0;
-  for (size_t i = 0; i < elements.size(); ++i) {
-    const double stops = elements.opacity.empty() ? 1.0 : elements.opacity[i];
-    if (elements.valid(i)) delivered_power += stops * double(sum(lights_and_sky[i])) / 3.0 * elements.area[i];
-    result.direct[i] += lights_and_sky[i];
-  }
-  lights_and_sky = {};
+  result.direct = clock.run("direct light", [&] {
+    return shared_direct_light(scene, elements, surface, materials, tracer, options, plan, progress, delivered_power);
+  });
   check_element_values("direct light", result.direct, checked);
+  if (options.sharing.stop_after == StopAfter::DirectLight) throw StoppedEarly("direct light");
   if (plan.interreflection) {
     interreflect(elements, surface, tracer, options, plan, delivered_power, checked, progress, on_preview, result);
   } else {
@@ -202,8 +370,18 @@ BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& optio
   return bake(scene, atlas, options, plan_effects(scene, plan), on_progress, on_preview);
 }
 
-BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& options, const EffectPlan& plan,
+BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& given, const EffectPlan& plan,
                 const ProgressCallback& on_progress, const PreviewCallback& on_preview) {
+  SoloTeam alone;
+  BakeOptions options = given;
+  if (!options.sharing.team) options.sharing.team = &alone;
+  Team& team = *options.sharing.team;
+  const bool sliced = options.sharing.slice.by != GatherSlice::By::Everything || options.sharing.merge_slices > 0;
+  if (sliced && (options.method != Method::Radiosity || !plan.interreflection))
+    throw InputError("this bake has no final gather to slice: the plan simulates direct light only");
+  if (sliced && !options.sharing.store) throw InputError("slices of the final gather are kept in a checkpoint: give one");
+  if (team.size() > 1 && options.method == Method::PathTrace)
+    throw InputError("the path tracer bakes in one process: run it without mpirun");
   std::unique_ptr<tbb::global_control> thread_limit;
   if (options.threads > 0)
     thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, options.threads);
@@ -253,6 +431,20 @@ BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& optio
   } else {
     compute_radiosity(scene, elements, surface, materials, *tracer, options, plan, checked, progress, on_preview, result);
   }
+  // The team's rays (the others' counted here, the first's at the end: it goes on to the sensors)
+  // and each process's peak memory so far, for the report.
+  ByteWriter mine;
+  mine.put(team.first() ? uint64_t(0) : tracer->rays_cast());
+  mine.put(peak_resident_bytes());
+  uint64_t others_rays = 0;
+  for (const Bytes& b : team.gather_to_first("report", mine.bytes())) {
+    ByteReader in(b);
+    others_rays += in.get<uint64_t>();
+    report.process_peak_bytes.push_back(in.get<uint64_t>());
+  }
+  report.processes = team.size();
+  report.traffic = team.traffic();
+  if (!team.first()) return {};
   if (!options.keep_direct) result.direct = {};
   std::vector<Rgb> radiosity;
   if (options.store == StoredQuantity::Radiosity) radiosity = radiosity_of(elements, result.irradiance);
@@ -295,7 +487,7 @@ BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& optio
     report.moved_samples += (elements.flags[i] & kPushedOut) != 0;
     report.filtered_texels += (elements.flags[i] & kFiltered) != 0;
   }
-  report.rays = tracer->rays_cast();
+  report.rays = tracer->rays_cast() + others_rays;
   result.elements = std::move(elements);
   return result;
 }

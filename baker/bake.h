@@ -24,6 +24,7 @@
 #include "baker/ray_tracer.h"
 #include "baker/scene.h"
 #include "baker/sensor_points.h"
+#include "baker/sharing.h"
 #include "baker/sky_light.h"
 #include "baker/surface.h"
 #include "baker/solve_radiosity.h"
@@ -73,6 +74,7 @@ struct BakeOptions {
   float glazing_transmittance = -1;
   bool keep_direct = false;     // keep BakeResult::direct (for debug dumps); costs 12 bytes per texel
   size_t preview_every = 0;     // with a preview callback: pages of the estimate every N shots or sweeps
+  Sharing sharing;              // a team of processes, a checkpoint, a slice of the gather (sharing.h)
 };
 
 struct StageTime {
@@ -102,6 +104,9 @@ struct BakeReport {
   double path_mean_vertices = 0;
   std::vector<SurfaceStatistics> surfaces;  // per instance, lux
   std::vector<std::string> warnings;
+  int processes = 1;                   // the team that baked it
+  std::vector<StageTraffic> traffic;   // per shared stage: bytes exchanged, compute and busiest seconds
+  std::vector<uint64_t> process_peak_bytes;  // per process, its peak resident set before the first writes
 };
 
 struct BakeResult {
@@ -140,7 +145,9 @@ BakeGeometry bake_geometry(const Scene& scene, const Atlas& atlas, const BakeOpt
 using PreviewCallback = std::function<void(const std::vector<LightmapPage>& pages, size_t iteration)>;
 
 // Simulates what `plan` says (plan_effects(scene, options.plan), or a plan a test has changed).
-// Throws InputError when no texel covers a visible surface, Cancelled when the callback says so.
+// Throws InputError when no texel covers a visible surface, Cancelled when the callback says so,
+// StoppedEarly when options.sharing asks to stop with the checkpoint saved. In a team, only the
+// first process's result holds the light; the others return with an empty one.
 BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& options, const EffectPlan& plan,
                 const ProgressCallback& on_progress = {}, const PreviewCallback& on_preview = {});
 

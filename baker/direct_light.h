@@ -25,13 +25,15 @@ struct DirectLightOptions {
   std::vector<uint8_t> light_traced;  // per light: 0 skips it (the plan culled it); empty: every light
 };
 
+// Both return the irradiance of the elements in `range`, the first at index 0.
 std::vector<Rgb> punctual_irradiance(const Elements& elements, const Surface& surface,
                                      const std::vector<Light>& lights, const RayTracer& tracer,
-                                     const DirectLightOptions& options, uint64_t seed, Progress& progress);
+                                     const DirectLightOptions& options, uint64_t seed, Progress& progress,
+                                     ElementRange range = {});
 
 std::vector<Rgb> emitter_irradiance(const Elements& elements, const Surface& surface, const MaterialSampler& materials,
                                     const RayTracer& tracer, const DirectLightOptions& options, uint64_t seed,
-                                    Progress& progress);
+                                    Progress& progress, ElementRange range = {});
 
 // Irradiance at point x (unit normal n) from a Lambertian polygon of unit exitance, unoccluded:
 // the point-to-polygon form factor by Lambert's contour integral. The polygon must lie on the

@@ -2,6 +2,7 @@
 // each with a sample point on the surface, a normal, its share of surface area and its material.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -51,6 +52,13 @@ struct Elements {
 
   size_t size() const { return area.size(); }
   bool valid(size_t i) const { return !(flags[i] & kBuried); }
+};
+
+// Elements [begin, end) of a stage's share of the work (shared_stage.h); the default is all.
+struct ElementRange {
+  size_t begin = 0, end = SIZE_MAX;
+  ElementRange within(size_t count) const { return {std::min(begin, count), std::min(end, count)}; }
+  size_t size() const { return end - begin; }
 };
 
 // Which texels average their material over their footprint (the others read it at their sample).

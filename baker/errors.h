@@ -33,6 +33,12 @@ inline std::string clipped(const std::string& text, size_t max = 100) {
   return out.substr(0, head) + "..." + out.substr(tail);
 }
 
+// Thrown when a bake has done what it was asked to (--stop-after, a slice of the gather) and its
+// checkpoint holds it: what() names the last stage done.
+struct StoppedEarly : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 // Thrown out of a stage when the progress callback asks to stop.
 struct Cancelled : std::runtime_error {
   Cancelled() : std::runtime_error("cancelled") {}

@@ -110,11 +110,6 @@ std::vector<Rgb> near_field_bounces(const Patches& patches, const PatchTransport
   return gathered_irradiance(patches, transport, reflected);
 }
 
-// Gather rays from a receiver that landed near, on one struck element.
-struct NearLanding {
-  uint32_t receiver, struck, count;
-};
-
 // Texels in a corner light each other: what the floor's first row reflects onto the foot of a
 // block depends on what that foot reflects back, and both are darker than their patches. So the
 // near field takes each struck texel's own gathered light, rho_j (D_j + H_j), and the H of the
@@ -123,37 +118,41 @@ struct NearLanding {
 // reads only the last), so threads do not change the result; rho times the near share of a
 // hemisphere is below one, so they converge.
 void solve_near_indirect(const Elements& e, const Patches& patches, const std::vector<Rgb>& patch_indirect,
-                         const std::vector<std::vector<NearLanding>>& landings, uint32_t rays,
-                         std::vector<Rgb>& irradiance) {
+                         const std::vector<NearLanding>& landings, uint32_t rays, std::vector<Rgb>& irradiance) {
   const float per_ray = 1.0f / float(rays);
   std::vector<Rgb> fixed = irradiance;
   float largest = 0;
-  for (const auto& block : landings)
-    for (const NearLanding& l : block) {
-      fixed[l.receiver] -= e.reflectance[l.struck] * patch_indirect[patches.patch_of_element[l.struck]] *
-                           (float(l.count) * per_ray);
-      const Rgb& h = irradiance[l.receiver];
-      largest = std::max({largest, h.x, h.y, h.z});
-    }
+  for (const NearLanding& l : landings) {
+    fixed[l.receiver] -= e.reflectance[l.struck] * patch_indirect[patches.patch_of_element[l.struck]] *
+                         (float(l.count) * per_ray);
+    const Rgb& h = irradiance[l.receiver];
+    largest = std::max({largest, h.x, h.y, h.z});
+  }
+  // Blocks of landings that begin with a receiver's first, so each receiver is one block's.
+  constexpr size_t kBlock = 1024;
+  std::vector<size_t> block_start;
+  for (size_t a = 0; a < landings.size(); ++a)
+    if (block_start.empty() || (a - block_start.back() >= kBlock && landings[a].receiver != landings[a - 1].receiver))
+      block_start.push_back(a);
+  block_start.push_back(landings.size());
+  const size_t blocks = block_start.size() - 1;
   std::vector<Rgb> next = irradiance;
-  std::vector<float> block_change(landings.size());
-  for (int sweep = 0; sweep < 200; ++sweep) {
-    tbb::parallel_for(size_t(0), landings.size(), [&](size_t block) {
+  std::vector<float> block_change(blocks);
+  for (int sweep = 0; sweep < 200 && blocks > 0; ++sweep) {
+    tbb::parallel_for(size_t(0), blocks, [&](size_t block) {
       float change = 0;
-      const std::vector<NearLanding>& list = landings[block];
-      for (size_t a = 0, b; a < list.size(); a = b) {
-        const uint32_t i = list[a].receiver;
+      for (size_t a = block_start[block], b; a < block_start[block + 1]; a = b) {
+        const uint32_t i = landings[a].receiver;
         Rgb h = fixed[i];
-        for (b = a; b < list.size() && list[b].receiver == i; ++b)
-          h += e.reflectance[list[b].struck] * irradiance[list[b].struck] * (float(list[b].count) * per_ray);
+        for (b = a; b < block_start[block + 1] && landings[b].receiver == i; ++b)
+          h += e.reflectance[landings[b].struck] * irradiance[landings[b].struck] * (float(landings[b].count) * per_ray);
         const Rgb d = h - irradiance[i];
         change = std::max({change, std::fabs(d.x), std::fabs(d.y), std::fabs(d.z)});
         next[i] = h;
       }
       block_change[block] = change;
     });
-    for (const auto& block : landings)
-      for (const NearLanding& l : block) irradiance[l.receiver] = next[l.receiver];
+    for (const NearLanding& l : landings) irradiance[l.receiver] = next[l.receiver];
     if (*std::max_element(block_change.begin(), block_change.end()) <= 1e-5f * largest) break;
   }
 }
@@ -161,19 +160,18 @@ void solve_near_indirect(const Elements& e, const Patches& patches, const std::v
 // What the near field took beyond each struck patch's mean, by (receiving patch, struck patch).
 NearTally tally_near_field(const Elements& e, const Patches& patches, const std::vector<Rgb>& patch_exitance,
                            const std::vector<Rgb>& direct, const std::vector<Rgb>& irradiance,
-                           const std::vector<std::vector<NearLanding>>& landings, uint32_t rays) {
+                           const std::vector<NearLanding>& landings, uint32_t rays) {
   NearTally near;
-  for (const auto& block : landings)
-    for (const NearLanding& l : block) {
-      const uint32_t q = patches.patch_of_element[l.struck];
-      const Rgb beyond = e.reflectance[l.struck] * (direct[l.struck] + irradiance[l.struck]) - patch_exitance[q];
-      const double share = double(e.area[l.receiver]) * l.count / rays;
-      NearExchange& exchange = near[{patches.patch_of_element[l.receiver], q}];
-      exchange.share += share;
-      exchange.excess[0] += share * beyond.x;
-      exchange.excess[1] += share * beyond.y;
-      exchange.excess[2] += share * beyond.z;
-    }
+  for (const NearLanding& l : landings) {
+    const uint32_t q = patches.patch_of_element[l.struck];
+    const Rgb beyond = e.reflectance[l.struck] * (direct[l.struck] + irradiance[l.struck]) - patch_exitance[q];
+    const double share = double(e.area[l.receiver]) * l.count / rays;
+    NearExchange& exchange = near[{patches.patch_of_element[l.receiver], q}];
+    exchange.share += share;
+    exchange.excess[0] += share * beyond.x;
+    exchange.excess[1] += share * beyond.y;
+    exchange.excess[2] += share * beyond.z;
+  }
   return near;
 }
 
@@ -203,25 +201,28 @@ void apply_patch_changes(const Elements& e, const Patches& patches, const std::v
 
 }  // namespace
 
-GatheredLight gather_indirect(const Elements& e, const Patches& patches, const Surface& surface,
-                              const RayTracer& tracer, const PatchTransport& transport,
-                              const std::vector<Rgb>& patch_exitance, const std::vector<Rgb>& direct, uint32_t rays,
-                              bool near_field, uint64_t seed, Progress& progress, GatherStats* stats) {
-  GatheredLight out;
-  out.irradiance.resize(e.size());
-  out.harmonic_distance.assign(e.size(), INFINITY);
-  const std::vector<Rgb> patch_indirect = gathered_irradiance(patches, transport, patch_exitance);
-  const std::vector<float> reach = near_reach(e, patches, surface);
-  // Fixed blocks of elements, each with its own list of near landings, taken in block order: the
-  // same sums whatever the threads.
+GatherInputs gather_inputs(const Elements& e, const Patches& patches, const Surface& surface,
+                           std::vector<Rgb> patch_indirect) {
+  return {std::move(patch_indirect), near_reach(e, patches, surface)};
+}
+
+GatherTrace trace_gather(const Elements& e, const Patches& patches, const Surface& surface, const RayTracer& tracer,
+                         const GatherInputs& inputs, const std::vector<Rgb>& patch_exitance,
+                         const std::vector<Rgb>& direct, uint32_t rays, bool near_field, uint64_t seed,
+                         ElementRange range) {
+  range = range.within(e.size());
+  GatherTrace out;
+  out.irradiance.resize(range.size());
+  out.harmonic_distance.assign(range.size(), INFINITY);
+  // Fixed blocks of elements, each with its own list of near landings, joined in block order: the
+  // same list whatever the threads.
   constexpr size_t kBlock = 256;
-  std::vector<std::vector<NearLanding>> landings((e.size() + kBlock - 1) / kBlock);
+  std::vector<std::vector<NearLanding>> landings((range.size() + kBlock - 1) / kBlock);
   std::atomic<uint64_t> lost{0}, cast{0};
-  progress.begin("final gather", e.size());
   tbb::parallel_for(size_t(0), landings.size(), [&](size_t block) {
     uint64_t my_lost = 0, my_cast = 0;
     std::vector<uint32_t> struck;
-    const size_t begin = block * kBlock, end = std::min(e.size(), begin + kBlock);
+    const size_t begin = range.begin + block * kBlock, end = std::min(range.end, begin + kBlock);
     for (size_t i = begin; i < end; ++i) {
       if (!e.valid(i) || rays == 0 || patches.patch_of_element[i] == UINT32_MAX) continue;
       const Vec3 ng = surface.normal[e.triangle[i]];
@@ -241,7 +242,7 @@ GatheredLight gather_indirect(const Elements& e, const Patches& patches, const S
           my_lost += !at.escaped;
           continue;
         }
-        if (near_field && at.distance < reach[at.patch]) {
+        if (near_field && at.distance < inputs.near_reach[at.patch]) {
           sum += e.reflectance[at.element] * direct[at.element];
           struck.push_back(at.element);
         } else {
@@ -253,21 +254,32 @@ GatheredLight gather_indirect(const Elements& e, const Patches& patches, const S
       for (auto a = struck.begin(); a != struck.end();) {
         const auto b = std::upper_bound(a, struck.end(), *a);
         landings[block].push_back({uint32_t(i), *a, uint32_t(b - a)});
-        sum += e.reflectance[*a] * patch_indirect[patches.patch_of_element[*a]] * float(b - a);
+        sum += e.reflectance[*a] * inputs.patch_indirect[patches.patch_of_element[*a]] * float(b - a);
         a = b;
       }
       // With cosine-distributed directions, irradiance is the mean exitance seen (E = pi * mean L).
-      out.irradiance[i] = sum / float(rays);
-      if (nearness > 0) out.harmonic_distance[i] = float(double(rays) / nearness);
+      out.irradiance[i - range.begin] = sum / float(rays);
+      if (nearness > 0) out.harmonic_distance[i - range.begin] = float(double(rays) / nearness);
       my_cast += rays;
     }
     lost += my_lost;
     cast += my_cast;
-    progress.advance(end - begin);
   });
-  progress.end();
-  if (rays > 0 && near_field) solve_near_indirect(e, patches, patch_indirect, landings, rays, out.irradiance);
-  const NearTally near = tally_near_field(e, patches, patch_exitance, direct, out.irradiance, landings, rays);
+  for (const auto& block : landings) out.landings.insert(out.landings.end(), block.begin(), block.end());
+  out.lost = lost;
+  out.cast = cast;
+  return out;
+}
+
+GatheredLight finish_gather(const Elements& e, const Patches& patches, const PatchTransport& transport,
+                            const GatherInputs& inputs, const std::vector<Rgb>& patch_exitance,
+                            const std::vector<Rgb>& direct, uint32_t rays, bool near_field, GatherTrace whole,
+                            GatherStats* stats) {
+  GatheredLight out;
+  out.irradiance = std::move(whole.irradiance);
+  out.harmonic_distance = std::move(whole.harmonic_distance);
+  if (rays > 0 && near_field) solve_near_indirect(e, patches, inputs.patch_indirect, whole.landings, rays, out.irradiance);
+  const NearTally near = tally_near_field(e, patches, patch_exitance, direct, out.irradiance, whole.landings, rays);
   std::vector<Rgb> correction = far_field_correction(patches, transport, near);
   std::vector<Rgb> received = correction;  // per patch: the mean change of its texels' irradiance
   for (const auto& [pq, x] : near) {
@@ -277,7 +289,7 @@ GatheredLight gather_indirect(const Elements& e, const Patches& patches, const S
   const std::vector<Rgb> bounces = near_field_bounces(patches, transport, received);
   for (size_t p = 0; p < patches.size(); ++p) correction[p] += bounces[p];
   apply_patch_changes(e, patches, correction, out.irradiance);
-  if (stats) stats->back_face_fraction = cast ? double(lost) / double(cast) : 0.0;
+  if (stats) stats->back_face_fraction = whole.cast ? double(whole.lost) / double(whole.cast) : 0.0;
   return out;
 }
 

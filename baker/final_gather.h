@@ -30,11 +30,41 @@ struct GatheredLight {
   std::vector<float> harmonic_distance;
 };
 
+// Gather rays from a receiver that landed near, on one struck element (the near field).
+struct NearLanding {
+  uint32_t receiver, struck, count;
+};
+
+// What the gather rays of a range of elements found: the part of the gather a process of a team
+// computes (shared_stage.h). The rest, finish_gather, needs every range.
+struct GatherTrace {
+  std::vector<Rgb> irradiance;          // per element of the range, lux, before the near field is solved
+  std::vector<float> harmonic_distance; // per element of the range, metres
+  std::vector<NearLanding> landings;    // by receiver, then struck element
+  uint64_t lost = 0, cast = 0;          // rays that struck back faces or buried texels, rays cast
+};
+
+// What every range needs besides the elements: per patch, the irradiance it gathers in the solve
+// (gathered_irradiance of the solved exitance) and how far its near field reaches.
+struct GatherInputs {
+  std::vector<Rgb> patch_indirect;
+  std::vector<float> near_reach;
+};
+GatherInputs gather_inputs(const Elements& elements, const Patches& patches, const Surface& surface,
+                           std::vector<Rgb> patch_indirect);
+
 // `patch_exitance`: the solve's reflected exitance per patch; `direct`: irradiance per element
 // from lights and emitters, lux; `near_field` false: every ray takes the patch mean.
-GatheredLight gather_indirect(const Elements& elements, const Patches& patches, const Surface& surface,
-                              const RayTracer& tracer, const PatchTransport& transport,
-                              const std::vector<Rgb>& patch_exitance, const std::vector<Rgb>& direct, uint32_t rays,
-                              bool near_field, uint64_t seed, Progress& progress, GatherStats* stats = nullptr);
+GatherTrace trace_gather(const Elements& elements, const Patches& patches, const Surface& surface,
+                         const RayTracer& tracer, const GatherInputs& inputs, const std::vector<Rgb>& patch_exitance,
+                         const std::vector<Rgb>& direct, uint32_t rays, bool near_field, uint64_t seed,
+                         ElementRange range);
+
+// The near field solved and its light balanced over the patches, from the traces of all the
+// ranges in element order (`whole`: their irradiance, harmonic distance and landings joined).
+GatheredLight finish_gather(const Elements& elements, const Patches& patches, const PatchTransport& transport,
+                            const GatherInputs& inputs, const std::vector<Rgb>& patch_exitance,
+                            const std::vector<Rgb>& direct, uint32_t rays, bool near_field, GatherTrace whole,
+                            GatherStats* stats = nullptr);
 
 }  // namespace radbake

@@ -4,7 +4,10 @@
 #include <chrono>
 #include <cmath>
 
+#include "baker/byte_stream.h"
+#include "baker/errors.h"
 #include "baker/hemicube_transport.h"
+#include "baker/shared_stage.h"
 
 namespace radbake {
 namespace {
@@ -39,6 +42,72 @@ void measure(const Elements& elements, const Patches& patches, const Surface& su
   else
     measure_ray_cast_rows(elements, patches, surface, tracer, options.rays_per_patch, power, which, seed, progress,
                           rows);
+}
+
+// The rows of the patches in `which`, measured across the team in chunks of a few patches; the
+// first process gets them all in `rows`, the others keep none.
+void measure_shared(const Elements& elements, const Patches& patches, const Surface& surface, const RayTracer& tracer,
+                    const FormFactorOptions& options, const std::vector<double>& power,
+                    const std::vector<uint32_t>& which, uint64_t seed, const std::string& stage_name, Team& team,
+                    const Sharing& sharing, Progress& progress, MeasuredRows& rows) {
+  const std::vector<size_t> starts = chunk_starts(which.size(), which.size() / 256, 1, 1, {});
+  MeasuredRows scratch;
+  scratch.resize(patches.size());
+  Progress quiet;
+  SharedStage stage;
+  stage.name = stage_name;
+  stage.chunks = starts.size() - 1;
+  stage.compute = [&](size_t chunk) {
+    const std::vector<uint32_t> some(which.begin() + std::ptrdiff_t(starts[chunk]),
+                                     which.begin() + std::ptrdiff_t(starts[chunk + 1]));
+    measure(elements, patches, surface, tracer, options, power, some, seed, quiet, scratch);
+    ByteWriter out;
+    for (uint32_t p : some) {
+      out.put(uint64_t(scratch.rows[p].size()));
+      for (auto [q, f] : scratch.rows[p]) {
+        out.put(q);
+        out.put(f);
+      }
+      out.put(scratch.escaped[p]);
+      out.put(scratch.lost[p]);
+      out.put(scratch.rays[p]);
+      MeasuredRow().swap(scratch.rows[p]);
+    }
+    return out.bytes();
+  };
+  stage.take = [&](size_t chunk, const Bytes& result) {
+    ByteReader in(result);
+    for (size_t w = starts[chunk]; w < starts[chunk + 1]; ++w) {
+      const uint32_t p = which[w];
+      const uint64_t count = in.get<uint64_t>();
+      if (count > patches.size()) throw TruncatedBytes();
+      rows.rows[p].resize(count);
+      for (auto& [q, f] : rows.rows[p]) {
+        q = in.get<uint32_t>();
+        f = in.get<float>();
+        if (q >= patches.size()) throw TruncatedBytes();
+      }
+      rows.escaped[p] = in.get<float>();
+      rows.lost[p] = in.get<float>();
+      rows.rays[p] = in.get<uint32_t>();
+    }
+  };
+  run_shared_stage(stage, team, sharing.store, sharing.resume, tracer, progress);
+}
+
+// The first process's solution, and whether to split, to the others: they split their patches
+// the same way and gather from the same exitance.
+void share_solution(Team& team, RadiositySolution& solution, std::vector<uint8_t>& split) {
+  ByteWriter out;
+  if (team.first()) {
+    out.put_vector(solution.exitance);
+    out.put_vector(split);
+  }
+  team.broadcast_from_first("radiosity", out.bytes());
+  if (team.first()) return;
+  ByteReader in(out.bytes());
+  solution.exitance = in.get_vector<Rgb>();
+  split = in.get_vector<uint8_t>();
 }
 
 // A share of a carried row that landed on a patch split since: it goes to the pieces once their
@@ -171,7 +240,9 @@ Interreflection solve_interreflection(const Elements& elements, const Surface& s
                                       const std::vector<Rgb>& direct, const PatchOptions& patch_options,
                                       const FormFactorOptions& form_factors, const SubdivisionOptions& subdivision,
                                       const SolveOptions& solve, uint64_t seed, Progress& progress,
-                                      const InterreflectionObserver& observer) {
+                                      const InterreflectionObserver& observer, const Sharing& sharing) {
+  SoloTeam alone;
+  Team& team = sharing.team ? *sharing.team : alone;
   Interreflection out;
   SolveObserver solve_observer{observer.every, [&](const std::vector<Rgb>& exitance, size_t iteration) {
                                  observer.see(out.patches, out.transport, exitance, iteration);
@@ -186,21 +257,30 @@ Interreflection solve_interreflection(const Elements& elements, const Surface& s
   std::vector<std::vector<uint32_t>> pieces;
   std::vector<PendingShare> pending;
   for (int round = 0;; ++round) {
+    const std::string suffix = round == 0 ? "" : ", round " + std::to_string(round + 1);
     auto start = std::chrono::steady_clock::now();
-    measure(elements, out.patches, surface, tracer, form_factors, power, which, seed, progress, rows);
-    resolve_pending(out.patches, pieces, pending, rows);
+    measure_shared(elements, out.patches, surface, tracer, form_factors, power, which, seed, "form factors" + suffix,
+                   team, sharing, progress, rows);
+    if (round == 0 && sharing.stop_after == StopAfter::FormFactors) throw StoppedEarly("form factors");
     // Only another round reads the measured rows again: the last hands them over to be freed.
     const bool last_round = subdivision.tolerance <= 0 || round >= subdivision.max_rounds;
-    out.transport = balanced_transport(out.patches, last_round ? std::move(rows) : MeasuredRows(rows));
+    if (team.first()) {
+      resolve_pending(out.patches, pieces, pending, rows);
+      out.transport = balanced_transport(out.patches, last_round ? std::move(rows) : MeasuredRows(rows));
+    }
     out.form_factor_seconds += seconds_since(start);
     start = std::chrono::steady_clock::now();
-    out.solution = solve_radiosity(out.patches, out.transport, patch_direct, solve, progress, solve_observer);
+    std::vector<uint8_t> split;
+    if (team.first()) {
+      SolveSaving saving{sharing.store, "radiosity" + suffix, sharing.resume, sharing.solve_save_seconds};
+      out.solution = solve_radiosity(out.patches, out.transport, patch_direct, solve, progress, solve_observer, saving);
+      if (!last_round) split = patches_to_split(elements, surface, out.patches, out.solution.exitance, subdivision.tolerance);
+    }
+    share_solution(team, out.solution, split);
     out.solve_seconds += seconds_since(start);
     out.rounds.push_back({out.patches.size(), 0});
     if (last_round) break;
 
-    std::vector<uint8_t> split =
-        patches_to_split(elements, surface, out.patches, out.solution.exitance, subdivision.tolerance);
     out.rounds.back().split = size_t(std::count(split.begin(), split.end(), uint8_t(1)));
     if (out.rounds.back().split == 0) break;
     Patches finer = split_patches(elements, surface, out.patches, split);

@@ -11,6 +11,7 @@
 
 #include "baker/patch_transport.h"
 #include "baker/patches.h"
+#include "baker/sharing.h"
 #include "baker/solve_radiosity.h"
 
 namespace radbake {
@@ -50,12 +51,14 @@ struct InterreflectionObserver {
   std::function<void(const Patches&, const PatchTransport&, const std::vector<Rgb>& exitance, size_t iteration)> see;
 };
 
-// `direct`: irradiance per element from lights and emitting surfaces, lux.
+// `direct`: irradiance per element from lights and emitting surfaces, lux. Shared by a team, the
+// rows of form factors are measured by all and solved on the first process: the others get the
+// patches and the solved exitance, but no transport.
 Interreflection solve_interreflection(const Elements& elements, const Surface& surface, const RayTracer& tracer,
                                       const std::vector<Rgb>& direct, const PatchOptions& patch_options,
                                       const FormFactorOptions& form_factors, const SubdivisionOptions& subdivision,
                                       const SolveOptions& solve, uint64_t seed, Progress& progress,
-                                      const InterreflectionObserver& observer = {});
+                                      const InterreflectionObserver& observer = {}, const Sharing& sharing = {});
 
 // Irradiance per patch from the other patches' reflected `exitance`: what each gathers, sum over
 // q of B_q A_q F_qp / A_p (= F_pq B_q by reciprocity between single-sided patches), lux.

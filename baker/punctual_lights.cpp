@@ -41,12 +41,13 @@ Rgb punctual_light_irradiance(const Light& light, Vec3 x, Vec3 n, Vec3* to_light
 
 std::vector<Rgb> punctual_irradiance(const Elements& e, const Surface& surface, const std::vector<Light>& lights,
                                      const RayTracer& tracer, const DirectLightOptions& options, uint64_t seed,
-                                     Progress& progress) {
-  std::vector<Rgb> irradiance(e.size());
+                                     Progress& progress, ElementRange range) {
+  range = range.within(e.size());
+  std::vector<Rgb> irradiance(range.size());
   if (lights.empty()) return irradiance;
   const int rays = std::max(1, options.punctual_rays);
-  progress.begin("punctual lights", e.size());
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, e.size(), 256), [&](const tbb::blocked_range<size_t>& r) {
+  progress.begin("punctual lights", range.size());
+  tbb::parallel_for(tbb::blocked_range<size_t>(range.begin, range.end, 256), [&](const tbb::blocked_range<size_t>& r) {
     for (size_t i = r.begin(); i < r.end(); ++i) {
       if (!e.valid(i)) continue;
       const Vec3 ng = surface.normal[e.triangle[i]];
@@ -70,7 +71,7 @@ std::vector<Rgb> punctual_irradiance(const Elements& e, const Surface& surface, 
         }
         total += sum / float(rays);
       }
-      irradiance[i] = total;
+      irradiance[i - range.begin] = total;
     }
     progress.advance(r.size());
   });

@@ -101,11 +101,12 @@ struct SkyRays {
 }  // namespace
 
 std::vector<Rgb> sky_irradiance(const Elements& e, const Surface& surface, const RayTracer& tracer,
-                                const SkyLight& sky, uint64_t seed, Progress& progress) {
-  std::vector<Rgb> irradiance(e.size());
+                                const SkyLight& sky, uint64_t seed, Progress& progress, ElementRange range) {
+  range = range.within(e.size());
+  std::vector<Rgb> irradiance(range.size());
   const SkyRays rays(sky, tracer);
-  progress.begin("sky", e.size());
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, e.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
+  progress.begin("sky", range.size());
+  tbb::parallel_for(tbb::blocked_range<size_t>(range.begin, range.end, 64), [&](const tbb::blocked_range<size_t>& r) {
     for (size_t i = r.begin(); i < r.end(); ++i) {
       if (!e.valid(i)) continue;
       const Vec3 ng = surface.normal[e.triangle[i]];
@@ -113,7 +114,7 @@ std::vector<Rgb> sky_irradiance(const Elements& e, const Surface& surface, const
       const float lux = float(rays.lux(e.normal[i], ng, [&](Vec2 u) {
         return footprint_point(e, surface, i, u) + ng * e.offset[i];
       }, rng));
-      irradiance[i] = Rgb{lux, lux, lux};
+      irradiance[i - range.begin] = Rgb{lux, lux, lux};
     }
     progress.advance(r.size());
   });

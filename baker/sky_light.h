@@ -81,8 +81,8 @@ double sun_disc_seen(const SkyView& view, const RayTracer& tracer, Vec3 origin, 
 std::vector<double> sky_illuminance_at(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
                                        const RayTracer& tracer, const SkyLight& sky, uint64_t seed);
 
-// Per element, lux (grey: the sky is white).
+// Per element of `range` (the first at index 0), lux (grey: the sky is white).
 std::vector<Rgb> sky_irradiance(const Elements& elements, const Surface& surface, const RayTracer& tracer,
-                                const SkyLight& sky, uint64_t seed, Progress& progress);
+                                const SkyLight& sky, uint64_t seed, Progress& progress, ElementRange range = {});
 
 }  // namespace radbake

@@ -1,8 +1,12 @@
 #include "baker/solve_radiosity.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
-#include <queue>
+#include <optional>
+
+#include "baker/byte_stream.h"
+#include "baker/errors.h"
 
 namespace radbake {
 namespace {
@@ -151,33 +155,104 @@ struct Outcome {
   bool converged = false;  // every enclosure within the tolerance
 };
 
+// Saves the solver's state when it is time (SolveSaving), and gives back a saved one.
+class SolveSaver {
+ public:
+  SolveSaver(const SolveSaving& s, int channels) : saving_(s), channels_(channels), last_(Clock::now()) {}
+
+  std::optional<Bytes> saved() const {
+    if (!saving_.store || !saving_.resume) return std::nullopt;
+    std::optional<Bytes> state = saving_.store->load(saving_.key);
+    if (state) {
+      ByteReader in(*state);
+      if (in.get<int32_t>() != channels_) throw InputError("the checkpoint's " + saving_.key + " solved other channels");
+      state->erase(state->begin(), state->begin() + sizeof(int32_t));
+    }
+    return state;
+  }
+  bool due() const {
+    return saving_.store && std::chrono::duration<double>(Clock::now() - last_).count() >= saving_.every_seconds;
+  }
+  template <typename Write>
+  void save(const Write& write) {
+    if (!saving_.store) return;
+    ByteWriter out;
+    out.put(int32_t(channels_));
+    write(out);
+    saving_.store->save(saving_.key, out.bytes());
+    last_ = Clock::now();
+  }
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  const SolveSaving& saving_;
+  int channels_;
+  Clock::time_point last_;
+};
+
+struct HeapEntry {
+  double key;
+  uint32_t patch;
+  bool operator<(const HeapEntry& o) const { return key < o.key || (key == o.key && patch < o.patch); }
+};
+
 template <typename V>
 Outcome shoot(const Problem<V>& pb, const std::vector<double>& input, const SolveOptions& options,
-              const SolveObserver& observer, Progress& progress, std::vector<V>& exitance, std::vector<V>& unshot) {
+              const SolveObserver& observer, Progress& progress, SolveSaver& saver, std::vector<V>& exitance,
+              std::vector<V>& unshot) {
   const size_t n = pb.size();
   const PatchTransport& t = pb.transport;
   const Enclosures& enclosures = pb.enclosures;
   // Max-heap of unshot power relative to the power brought into the patch's enclosure, with lazy
   // deletion: an entry is stale when its power is outdated.
-  using Entry = std::pair<double, uint32_t>;
-  std::priority_queue<Entry> heap;
+  std::vector<HeapEntry> heap;
+  auto push = [&](double key, uint32_t p) {
+    heap.push_back({key, p});
+    std::push_heap(heap.begin(), heap.end());
+  };
   std::vector<double> power(n), enclosure_unshot(enclosures.count, 0.0);
   auto relative = [&](uint32_t p) { return power[p] / input[enclosures.of_patch[p]]; };
-  for (size_t p = 0; p < n; ++p) {
-    unshot[p] = exitance[p] = pb.reflectance[p] * pb.direct[p];
-    power[p] = mean_power(unshot[p], pb.area(p));
-    enclosure_unshot[enclosures.of_patch[p]] += power[p];
-    if (power[p] > 0) heap.push({relative(uint32_t(p)), uint32_t(p)});
+  Outcome out;
+  size_t open_count = 0;
+  auto write_state = [&](ByteWriter& w) {
+    w.put(uint64_t(out.iterations));
+    w.put(uint64_t(open_count));
+    w.put_vector(exitance);
+    w.put_vector(unshot);
+    w.put_vector(power);
+    w.put_vector(enclosure_unshot);
+    w.put_vector(heap);
+  };
+  if (std::optional<Bytes> state = saver.saved()) {
+    ByteReader in(*state);
+    out.iterations = size_t(in.get<uint64_t>());
+    open_count = size_t(in.get<uint64_t>());
+    exitance = in.get_vector<V>();
+    unshot = in.get_vector<V>();
+    power = in.get_vector<double>();
+    enclosure_unshot = in.get_vector<double>();
+    heap = in.get_vector<HeapEntry>();
+    if (exitance.size() != n || unshot.size() != n || power.size() != n || enclosure_unshot.size() != enclosures.count ||
+        std::any_of(heap.begin(), heap.end(), [&](const HeapEntry& h) { return h.patch >= n; }))
+      throw InputError("the checkpoint's radiosity solve is for other patches");
+  } else {
+    for (size_t p = 0; p < n; ++p) {
+      unshot[p] = exitance[p] = pb.reflectance[p] * pb.direct[p];
+      power[p] = mean_power(unshot[p], pb.area(p));
+      enclosure_unshot[enclosures.of_patch[p]] += power[p];
+      if (power[p] > 0) push(relative(uint32_t(p)), uint32_t(p));
+    }
+    open_count = open_enclosures(enclosure_unshot, input, options.tolerance);
   }
   auto open = [&](uint32_t e) { return enclosure_unshot[e] > options.tolerance * input[e]; };
-  size_t open_count = open_enclosures(enclosure_unshot, input, options.tolerance);
-  Outcome out;
   size_t next_report = 0;
   while (open_count > 0 && !heap.empty() && out.iterations < options.max_iterations) {
-    auto [key, p] = heap.top();
-    heap.pop();
+    const HeapEntry top = heap.front();
+    std::pop_heap(heap.begin(), heap.end());
+    heap.pop_back();
+    const uint32_t p = top.patch;
     const uint32_t e = enclosures.of_patch[p];
-    if (key != relative(p) || !open(e)) continue;  // stale, or its enclosure is done
+    if (top.key != relative(p) || !open(e)) continue;  // stale, or its enclosure is done
     V shot = unshot[p] * pb.area(p);  // power leaving p, lm per channel
     unshot[p] = {};
     enclosure_unshot[e] -= power[p];
@@ -190,7 +265,7 @@ Outcome shoot(const Problem<V>& pb, const std::vector<double>& input, const Solv
       double added = mean_power(gain, pb.area(q));
       power[q] += added;
       enclosure_unshot[e] += added;
-      heap.push({relative(q), q});
+      push(relative(q), q);
     }
     open_count -= !open(e);
     ++out.iterations;
@@ -199,18 +274,20 @@ Outcome shoot(const Problem<V>& pb, const std::vector<double>& input, const Solv
     // and drop stale heap entries, so the heap stays linear in the patch count.
     if (out.iterations % 4096 == 0 || heap.size() > 8 * n + 1024) {
       enclosure_unshot.assign(enclosures.count, 0.0);
-      heap = {};
+      heap.clear();
       for (size_t q = 0; q < n; ++q) {
         enclosure_unshot[enclosures.of_patch[q]] += power[q];
-        if (power[q] > 0) heap.push({relative(uint32_t(q)), uint32_t(q)});
+        if (power[q] > 0) push(relative(uint32_t(q)), uint32_t(q));
       }
       open_count = open_enclosures(enclosure_unshot, input, options.tolerance);
     }
     if (out.iterations >= next_report) {
       progress.advance(0);
       next_report = out.iterations + 1024;
+      if (saver.due()) saver.save(write_state);
     }
   }
+  saver.save(write_state);
   for (double v : power) out.unshot_power += v;
   out.converged = open_count == 0;
   return out;
@@ -224,12 +301,23 @@ void residual_per_patch(const Problem<V>& pb, const Incoming& in, const std::vec
 
 template <typename V>
 Outcome gather(const Problem<V>& pb, const std::vector<double>& input, const SolveOptions& options,
-               const SolveObserver& observer, Progress& progress, std::vector<V>& b, std::vector<V>& unshot) {
+               const SolveObserver& observer, Progress& progress, SolveSaver& saver, std::vector<V>& b,
+               std::vector<V>& unshot) {
   const size_t n = pb.size();
   Incoming in = transpose(pb.patches, pb.transport);
   std::vector<V> next(n);
   std::vector<double> residual;
   Outcome out;
+  auto write_state = [&](ByteWriter& w) {
+    w.put(uint64_t(out.iterations));
+    w.put_vector(b);
+  };
+  if (std::optional<Bytes> state = saver.saved()) {
+    ByteReader r(*state);
+    out.iterations = size_t(r.get<uint64_t>());
+    b = r.get_vector<V>();
+    if (b.size() != n) throw InputError("the checkpoint's radiosity solve is for other patches");
+  }
   out.unshot_power = residual_power(pb, in, b, residual);
   size_t open_count = open_enclosures(residual, input, options.tolerance);
   while (open_count > 0 && out.iterations < options.max_iterations) {
@@ -248,7 +336,9 @@ Outcome gather(const Problem<V>& pb, const std::vector<double>& input, const Sol
       show(pb, options, observer, out.iterations, b, unshot);
     }
     progress.advance(0);
+    if (saver.due()) saver.save(write_state);
   }
+  saver.save(write_state);
   residual_per_patch(pb, in, b, unshot);
   out.converged = open_count == 0;
   return out;
@@ -257,7 +347,7 @@ Outcome gather(const Problem<V>& pb, const std::vector<double>& input, const Sol
 // Powers are in V's own units until the end, where `colour` turns them into lm (mean of RGB).
 template <typename V>
 void solve(const Problem<V>& pb, const SolveOptions& options, Progress& progress, const SolveObserver& observer,
-           RadiositySolution& s) {
+           const SolveSaving& saving, RadiositySolution& s) {
   const size_t n = pb.size();
   std::vector<double> input(pb.enclosures.count, 0.0);  // per enclosure
   double input_power = 0;
@@ -267,9 +357,10 @@ void solve(const Problem<V>& pb, const SolveOptions& options, Progress& progress
     input_power += power;
   }
   std::vector<V> exitance(n), unshot(n);
+  SolveSaver saver(saving, channels(V{}));
   Outcome out = options.solver == Solver::Shooting
-                    ? shoot(pb, input, options, observer, progress, exitance, unshot)
-                    : gather(pb, input, options, observer, progress, exitance, unshot);
+                    ? shoot(pb, input, options, observer, progress, saver, exitance, unshot)
+                    : gather(pb, input, options, observer, progress, saver, exitance, unshot);
   const Rgb colour = options.one_channel_colour;
   const double to_lumens = channels(V{}) == 1 ? mean(colour) : 1.0;
   s.iterations = out.iterations;
@@ -296,7 +387,7 @@ void solve(const Problem<V>& pb, const SolveOptions& options, Progress& progress
 
 RadiositySolution solve_radiosity(const Patches& patches, const PatchTransport& transport,
                                   const std::vector<Rgb>& direct, const SolveOptions& options, Progress& progress,
-                                  const SolveObserver& observer) {
+                                  const SolveObserver& observer, const SolveSaving& saving) {
   const size_t n = patches.size();
   const Enclosures enclosures = find_enclosures(transport);
   RadiositySolution s;
@@ -311,9 +402,9 @@ RadiositySolution solve_radiosity(const Patches& patches, const PatchTransport& 
       pb.reflectance[p] = patches.reflectance[p].x;
       pb.direct[p] = direct[p][c];
     }
-    solve(pb, options, progress, observer, s);
+    solve(pb, options, progress, observer, saving, s);
   } else {
-    solve(Problem<Rgb>{patches, transport, enclosures, patches.reflectance, direct}, options, progress, observer, s);
+    solve(Problem<Rgb>{patches, transport, enclosures, patches.reflectance, direct}, options, progress, observer, saving, s);
   }
   progress.end();
   return s;

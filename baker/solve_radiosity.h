@@ -14,6 +14,7 @@
 #include "baker/patch_transport.h"
 #include "baker/patches.h"
 #include "baker/progress.h"
+#include "baker/stage_store.h"
 
 namespace radbake {
 
@@ -50,9 +51,18 @@ struct SolveObserver {
   std::function<void(const std::vector<Rgb>& exitance, size_t iteration)> see;
 };
 
+// Where the solve saves its state now and then (every shot's or sweep's data, so a resumed
+// solve goes on exactly as it would have), and takes it back from when resuming.
+struct SolveSaving {
+  StageStore* store = nullptr;
+  std::string key;
+  bool resume = false;
+  double every_seconds = 60;  // at most this often, checked every 1024 shots or each sweep; 0: each time
+};
+
 // `direct` is the area-weighted mean direct irradiance of each patch in lux.
 RadiositySolution solve_radiosity(const Patches& patches, const PatchTransport& transport,
                                   const std::vector<Rgb>& direct, const SolveOptions& options, Progress& progress,
-                                  const SolveObserver& observer = {});
+                                  const SolveObserver& observer = {}, const SolveSaving& saving = {});
 
 }  // namespace radbake

@@ -80,12 +80,12 @@ int run(int argc, char** argv) {
       {"texture sampling (no textures)", "grey room with a block", test::lit_room(0.6f, {1, 1, 1}, true), "elements",
        {"elements"}, [](EffectPlan& p) { p.exhaustive = true; }},
       {"shadow rays of lights out of reach", "floor, block, 3 lights", test::floor_with_lights_out_of_reach(),
-       "punctual lights", {"punctual lights"}, [](EffectPlan& p) {
+       "direct light", {"direct light"}, [](EffectPlan& p) {
          std::fill(p.light_traced.begin(), p.light_traced.end(), 1);
          p.exhaustive = true;
        }},
       {"shadow rays (convex enclosure)", "room with a glowing ceiling", test::glowing_ceiling_room(),
-       "direct light", {"area lights", "punctual lights"}, [](EffectPlan& p) { p.shadow_rays = true; }},
+       "direct light", {"direct light"}, [](EffectPlan& p) { p.shadow_rays = true; }},
   };
   std::string table =
       "| skipped | scene | stage | stage s planned | stage s full | bake s planned | bake s full | rays planned | "

@@ -78,6 +78,7 @@ void apply_quality_preset(const std::string& name, BakeOptions& bake) {
 
 const char* usage_text() {
   return R"(usage: radbake bake SCENE.gltf|SCENE.glb -o OUTDIR [options]
+       radbake merge SCENE.gltf|SCENE.glb -o OUTDIR --checkpoint DIR [the slices' options]
        radbake uv SCENE.gltf|SCENE.glb --stats [--json] [lightmap UV options]
        radbake diff A B [--json] [--max-rmse PCT] [--max-p50|p95|p99 PCT] [--max-error X]
                     [--diff-images DIR]
@@ -206,6 +207,19 @@ bake options:
   --debug-dumps           also write OUTDIR/debug/*.exr: light by source, material, normals,
                           sample flags and patch layout, undilated
   --quiet                 no progress and no warnings on stderr
+
+distributed bakes (docs/distributed.md): under `mpirun -np N radbake bake ...` (or srun) the
+processes share the work and the first writes the output, the same bytes as one process
+  --checkpoint DIR        save each stage's results in DIR as the bake goes (the solve every
+                          --checkpoint-every seconds), so a stopped bake can resume
+  --resume                take back what DIR holds and go on from there; refused when DIR was
+                          saved by a bake of another scene or other options
+  --checkpoint-every S    within the radiosity solve, save at most every S seconds (default 60)
+  --stop-after STAGE      direct-light | form-factors | radiosity: stop there with DIR saved
+                          (then bake slices that share the solve)
+  --pages K/N             bake slice K of N of the final gather, whole pages, into DIR (needs
+                          --checkpoint; writes no output); `radbake merge` joins the slices
+  --texel-range K/N       the same in runs of texels, so one large page is split too
 
 daylight options (bake): a sky and a sun lighting the scene, besides its own lights
   --sky NAME              none | uniform | cie-overcast (the traditional CIE overcast sky, for
@@ -593,9 +607,19 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
     parse_view(args, cl);
     return cl;
   }
-  if (args[0] != "bake") throw UsageError("unknown command '" + clipped(args[0]) + "' (try radbake --help)");
-  cl.action = Action::Bake;
+  if (args[0] != "bake" && args[0] != "merge")
+    throw UsageError("unknown command '" + clipped(args[0]) + "' (try radbake --help)");
+  cl.action = args[0] == "merge" ? Action::Merge : Action::Bake;
   BakeCommand& b = cl.bake;
+  b.merge = cl.action == Action::Merge;
+  auto slice = [&](const std::string& option, GatherSlice::By by, const std::string& v) {
+    int k = 0, n = 0;
+    char extra = 0;
+    if (std::sscanf(v.c_str(), "%d/%d%c", &k, &n, &extra) != 2 || n < 1 || n > 100000 || k < 1 || k > n)
+      throw UsageError("option " + option + " needs K/N with 1 <= K <= N (slice K of N)" + got(v));
+    if (b.bake.sharing.slice.by != GatherSlice::By::Everything) throw UsageError("give one of --pages and --texel-range");
+    b.bake.sharing.slice = {by, k - 1, n};
+  };
 
   std::map<std::string, Setter> with_value = {
       {"--output", [&](const std::string& v) { b.output = v; }},
@@ -646,6 +670,18 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
        }},
       {"--sensors", [&](const std::string& v) { b.sensor_file = v; }},
       {"--weather", [&](const std::string& v) { b.weather_file = v; }},
+      {"--checkpoint", [&](const std::string& v) { b.checkpoint = v; }},
+      {"--checkpoint-every", [&](const std::string& v) {
+         b.bake.sharing.solve_save_seconds = parse_number("--checkpoint-every", v, 0, 1e7);
+       }},
+      {"--stop-after", [&](const std::string& v) {
+         if (v == "direct-light") b.bake.sharing.stop_after = StopAfter::DirectLight;
+         else if (v == "form-factors") b.bake.sharing.stop_after = StopAfter::FormFactors;
+         else if (v == "radiosity") b.bake.sharing.stop_after = StopAfter::Radiosity;
+         else throw UsageError("option --stop-after must be direct-light, form-factors or radiosity" + got(v));
+       }},
+      {"--pages", [&](const std::string& v) { slice("--pages", GatherSlice::By::Pages, v); }},
+      {"--texel-range", [&](const std::string& v) { slice("--texel-range", GatherSlice::By::Texels, v); }},
       {"--view", [&](const std::string& v) {
          float n[6];
          char tail = 0;
@@ -720,6 +756,7 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
       {"--simulate-everything", [&] { b.bake.plan.simulate_everything = true; }},
       {"--daylight-factor", [&] { b.daylight_factor = true; }},
       {"--work-plane", [&] { b.bake.work_plane.enabled = true; }},
+      {"--resume", [&] { b.bake.sharing.resume = true; }},
   };
   atlas_options(b.atlas, with_value, flags);
   load_options(b.load, with_value, flags);
@@ -741,7 +778,17 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
     return cl;
   }
   if (b.input.empty()) throw UsageError("missing input scene (radbake bake SCENE.gltf -o OUTDIR)");
-  if (b.output.empty()) throw UsageError("missing -o OUTDIR");
+  const bool sliced = b.bake.sharing.slice.by != GatherSlice::By::Everything;
+  const bool stops = b.bake.sharing.stop_after != StopAfter::Nothing;
+  if (b.output.empty() && !sliced && !stops) throw UsageError("missing -o OUTDIR");
+  if ((sliced || stops || b.bake.sharing.resume || b.merge) && b.checkpoint.empty())
+    throw UsageError(std::string(b.merge ? "radbake merge" : sliced ? "--pages and --texel-range" : stops ? "--stop-after" : "--resume") +
+                     " needs --checkpoint DIR");
+  if (sliced && stops) throw UsageError("a slice stops after its part of the final gather: leave out --stop-after");
+  if (b.merge && (sliced || stops)) throw UsageError("radbake merge joins slices: leave out --pages, --texel-range and --stop-after");
+  if (!b.output.empty() && (sliced || stops))
+    throw UsageError("a slice or a stopped bake writes only its checkpoint: leave out -o (radbake merge writes the output)");
+  if (b.merge) b.bake.sharing.resume = true;
   if (b.bake.plan.direct_only && b.bake.plan.simulate_everything)
     throw UsageError("--direct-only and --simulate-everything contradict each other");
   if (!b.weather_file.empty()) {

@@ -51,6 +51,9 @@ struct BakeCommand {
   size_t vertex_refine_triangles = 0;  // --display vertex: refine the mesh up to this many triangles; 0: as it is
   bool quiet = false;
   bool debug_dumps = false;
+  // Checkpoints and slices (docs/distributed.md); the team and the store are made in main.
+  std::string checkpoint;   // --checkpoint DIR; empty: none
+  bool merge = false;       // `radbake merge`: the final gather comes from the slices in the checkpoint
   std::vector<std::pair<std::string, std::string>> effective;  // every option and its value, for the report
 };
 
@@ -72,7 +75,7 @@ struct DiffCommand {
   bool json = false;         // machine-readable statistics
 };
 
-enum class Action { Bake, Uv, Diff, View, Help, Version };
+enum class Action { Bake, Merge, Uv, Diff, View, Help, Version };
 
 struct CommandLine {
   Action action = Action::Help;

@@ -5,17 +5,22 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
+#include <thread>
 #include <nlohmann/json.hpp>
 
 #include "baker/back_faces.h"
 #include "baker/bake.h"
+#include "baker/byte_stream.h"
 #include "baker/errors.h"
 #include "baker/surface.h"
 #include "cli/command_line.h"
 #include "cli/diff_command.h"
 #include "cli/interrupts.h"
+#include "cli/process_team.h"
 #include "cli/progress_display.h"
 #include "io/analysis_outputs.h"
+#include "io/checkpoint_folder.h"
 #include "io/annual_outputs.h"
 #include "io/epw_reader.h"
 #include "io/debug_dumps.h"
@@ -190,9 +195,36 @@ int run_annual(const radbake::BakeCommand& cmd) {
   return 0;
 }
 
-int run_bake(const radbake::BakeCommand& cmd) {
+// `radbake merge`: how many slices the checkpoint's final gather was cut into.
+int slice_count(const radbake::StageStore& store, const std::string& folder) {
+  const std::string prefix = "final gather, slice ";
+  int count = 0;
+  for (const std::string& name : store.stages(prefix)) {
+    int k = 0, n = 0;
+    if (std::sscanf(name.c_str() + prefix.size(), "%d of %d", &k, &n) != 2) continue;
+    if (count != 0 && n != count)
+      throw radbake::InputError("checkpoint " + folder + " holds slices of " + std::to_string(count) + " and of " +
+                                std::to_string(n) + " parts: remove one kind");
+    count = n;
+  }
+  if (count == 0) throw radbake::InputError("checkpoint " + folder + " holds no slice of the final gather (bake them with --pages K/N or --texel-range K/N)");
+  return count;
+}
+
+const char* stage_title(const std::string& stage) {
+  if (stage == "direct light") return "the direct light";
+  if (stage == "form factors") return "the form factors";
+  if (stage == "radiosity") return "the radiosity solve";
+  return nullptr;
+}
+
+int run_bake(const radbake::BakeCommand& cmd, radbake::Team& team) {
   using namespace radbake;
-  if (!cmd.weather_file.empty()) return run_annual(cmd);
+  if (!cmd.weather_file.empty()) {
+    if (team.size() > 1) throw InputError("--weather bakes a year in one process: run it without mpirun");
+    return run_annual(cmd);
+  }
+  const bool first = team.first();
   const auto start = std::chrono::steady_clock::now();
   RunInfo run;
   run.input = cmd.input;
@@ -216,19 +248,33 @@ int run_bake(const radbake::BakeCommand& cmd) {
   if (cmd.daylight_factor) analysis.daylight_factor_reference = daylight_factor_reference(cmd.daylight, daylight);
   if (!cmd.sensor_file.empty()) options.sensors = read_sensor_csv(cmd.sensor_file);
   const EffectPlan plan = plan_effects(loaded.scene, options.plan);
-  if (!cmd.quiet)
+  const bool quiet = cmd.quiet || !first;
+  if (!quiet)
     for (const PlanDecision& d : plan.decisions)
       std::fprintf(stderr, "radbake: plan: %s: %s (%s)\n", d.effect.c_str(), d.choice.c_str(), d.reason.c_str());
-  OutputSession session(cmd.output, cmd.quiet);
-  StagedFolder& folder = session.folder;
-  ProgressDisplay& display = session.display;
-  const ProgressCallback& progress = session.progress;
+  // Only the first process checks and writes the checkpoint; the others hand it their results.
+  std::unique_ptr<CheckpointFolder> checkpoint;
+  if (!cmd.checkpoint.empty())
+    checkpoint = std::make_unique<CheckpointFolder>(cmd.checkpoint, bake_fingerprint(loaded, cmd.effective), cmd.input, first);
+  options.sharing.team = &team;
+  options.sharing.store = checkpoint.get();
+  if (cmd.merge) options.sharing.merge_slices = slice_count(*checkpoint, cmd.checkpoint);
+  // A slice, a stopped bake and the processes after the first write no output folder.
+  std::optional<OutputSession> session;
+  if (first && !cmd.output.empty()) session.emplace(cmd.output, cmd.quiet);
+  ProgressDisplay no_folder_display(!quiet && !session);
+  const ProgressCallback no_folder_progress = [&](const std::string& stage, double fraction) {
+    no_folder_display.update(stage, fraction);
+    return !interrupted();
+  };
+  ProgressDisplay& display = session ? session->display : no_folder_display;
+  const ProgressCallback& progress = session ? session->progress : no_folder_progress;
   t = std::chrono::steady_clock::now();
   AtlasOptions atlas_options = cmd.atlas;
   atlas_options.progress = progress;
   Atlas atlas = ensure_lightmap_uvs(mesh_views(loaded.scene), atlas_options);
   run.io_times.push_back({"lightmap uvs", seconds_since(t)});
-  if (!cmd.quiet) {
+  if (!quiet) {
     display.finish();
     std::fprintf(stderr, "radbake: lightmap: %.4g texels/m, %.3g cm texels (%s)\n", atlas.texel_density,
                  100.0 / atlas.texel_density, atlas.density_choice.c_str());
@@ -236,11 +282,26 @@ int run_bake(const radbake::BakeCommand& cmd) {
 
   options.keep_direct = cmd.debug_dumps;
   const std::string name = std::filesystem::path(cmd.input).stem().string();
-  PreviewWriter previews(folder.path(), name, cmd.quiet);
-  BakeResult result = bake(
-      loaded.scene, atlas, options, plan, progress,
-      [&](const std::vector<LightmapPage>& pages, size_t iteration) { previews.write(pages, iteration); });
+  std::optional<PreviewWriter> previews;
+  if (session) previews.emplace(session->folder.path(), name, cmd.quiet);
+  BakeResult result;
+  try {
+    result = bake(loaded.scene, atlas, options, plan, progress, [&](const std::vector<LightmapPage>& pages, size_t iteration) {
+      if (previews) previews->write(pages, iteration);
+    });
+  } catch (const StoppedEarly& stopped) {
+    display.finish();
+    if (!first) return 0;
+    const char* title = stage_title(stopped.what());
+    std::printf("radbake: stopped after %s; checkpoint %s holds it (%s)\n", title ? title : stopped.what(),
+                cmd.checkpoint.c_str(),
+                title ? "go on with --resume, or bake slices of the gather with --pages or --texel-range K/N"
+                      : "join the slices with radbake merge");
+    return 0;
+  }
   display.finish();
+  if (!first) return 0;
+  StagedFolder& folder = session->folder;
   if (!cmd.quiet)
     for (size_t k = plan.decisions.size(); k < result.report.plan.size(); ++k) {
       const PlanDecision& d = result.report.plan[k];
@@ -364,29 +425,44 @@ int run_uv(const radbake::UvCommand& cmd) {
 
 int main(int argc, char** argv) {
   using namespace radbake;
+  ProcessTeam process_team(argc, argv);
+  Team& team = process_team.team();
   watch_interrupts();
+  // In a team, the first process reports the input's errors (every process meets the same ones);
+  // any process reports its own failures; then the whole team ends.
+  auto fail = [&](const std::exception& e, int status, bool input_error) {
+    if (team.first() || !input_error) print_error(e);
+    if (team.size() > 1) {
+      if (!team.first()) std::this_thread::sleep_for(std::chrono::seconds(1));  // the first's line goes out first
+      std::fflush(stderr);
+      process_team.abort(status);
+    }
+    return status;
+  };
   try {
     CommandLine cl = parse_command_line(std::vector<std::string>(argv + 1, argv + argc));
     switch (cl.action) {
       case Action::Help: std::fputs(usage_text(), stdout); return 0;
       case Action::Version: std::puts("radbake 0.1.0"); return 0;
-      case Action::Bake: return run_bake(cl.bake);
+      case Action::Bake:
+      case Action::Merge: return run_bake(cl.bake, team);
       case Action::Uv: return run_uv(cl.uv);
       case Action::Diff: return run_diff(cl.diff);
       case Action::View: return run_view(cl.view);
     }
   } catch (const UsageError& e) {
-    print_error(e);
-    return 2;
+    return fail(e, 2, true);
   } catch (const InputError& e) {
-    print_error(e);
-    return 2;
+    return fail(e, 2, true);
+  } catch (const TruncatedBytes& e) {
+    (void)e;
+    return fail(InputError("the checkpoint holds a stage that ends early (saved by another radbake?): remove the folder"), 2, true);
   } catch (const Cancelled&) {
-    std::fprintf(stderr, "\nradbake: cancelled; nothing was written\n");
+    if (team.first()) std::fprintf(stderr, "\nradbake: cancelled; nothing was written\n");
+    if (team.size() > 1) process_team.abort(interrupted_exit_status());
     return interrupted_exit_status();
   } catch (const std::exception& e) {
-    print_error(e);
-    return 1;
+    return fail(e, 1, false);
   }
   return 1;
 }

@@ -79,6 +79,13 @@ void write_report(const std::string& path, const RunInfo& run, const Scene& scen
   json stages = json::object();
   for (const StageTime& t : run.io_times) stages[t.stage] = t.seconds;
   for (const StageTime& t : bake.stage_times) stages[t.stage] = t.seconds;
+  // What the processes of the team exchanged and computed per shared stage (docs/distributed.md).
+  json shared = json::array();
+  for (const StageTraffic& t : bake.traffic)
+    shared.push_back({{"stage", t.stage}, {"bytes_exchanged", t.bytes}, {"exchanges", t.exchanges},
+                      {"compute_seconds", t.compute_seconds}, {"busiest_process_seconds", t.busiest_seconds}});
+  const json distribution = {{"processes", bake.processes}, {"stages", shared},
+                             {"peak_memory_bytes_per_process", bake.process_peak_bytes}};
   // One entry per radiosity solve: a single one unless adaptive subdivision split patches.
   json subdivision = json::array();
   for (const SubdivisionRound& r : bake.subdivision_rounds)
@@ -132,6 +139,7 @@ void write_report(const std::string& path, const RunInfo& run, const Scene& scen
                   {"gather_rays_lost_to_back_faces", bake.gather_back_face_fraction}}},
       {"subdivision", subdivision},
       {"seconds", stages},
+      {"distribution", distribution},
       {"total_seconds", run.total_seconds},
       {"peak_memory_bytes", run.peak_memory_bytes},
       {"solver", {{"iterations", bake.solver_iterations}, {"channels", bake.solved_channels},

@@ -12,7 +12,7 @@ import bpy
 from . import compat
 
 # radbake's stages in order, for one overall fraction from its per-stage progress lines.
-STAGES = ["lightmap uvs", "elements", "sample placement", "punctual lights", "area lights", "form factors",
+STAGES = ["lightmap uvs", "elements", "sample placement", "direct light", "form factors",
           "radiosity", "final gather"]
 PROGRESS = re.compile(r"^radbake: (.+) (\d+)%$")
 # Blender's exporter turns lights into candela with 683 lm/W but leaves emission strength as it

@@ -1,0 +1,170 @@
+// Bakes across processes and machines (issue 18, docs/distributed.md): under mpirun with 1 to 4
+// ranks, resumed after being killed, and as slices joined by radbake merge, radbake writes the
+// same files as one process baking alone, bit for bit (the EXR pages compared by pixel: their
+// header holds the time they were written). A checkpoint of another bake is refused.
+#include <gtest/gtest.h>
+
+#include <OpenImageIO/imageio.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "support/commands.h"
+#include "support/scene_builders.h"
+
+namespace radbake {
+namespace {
+
+namespace fs = std::filesystem;
+using test::Outcome;
+using test::radbake;
+
+const std::string kCornell = test::source_path("samples/cornell_box/cornell_box.gltf");
+const std::string kOptions = " --max-page-size 256 --quiet";
+
+// Open MPI's launcher, allowed to run as root (CI containers do), on more ranks than cores.
+std::string mpirun(int ranks) {
+  return "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1 mpirun -np " +
+         std::to_string(ranks) + " " + RADBAKE_BINARY + " ";
+}
+
+std::vector<float> exr_pixels(const std::string& path) {
+  auto in = OIIO::ImageInput::open(path);
+  EXPECT_TRUE(in) << path;
+  if (!in) return {};
+  const OIIO::ImageSpec& spec = in->spec();
+  std::vector<float> pixels(size_t(spec.width) * spec.height * spec.nchannels);
+  EXPECT_TRUE(in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data()));
+  return pixels;
+}
+
+// Every file of `reference` is in `candidate`, the same: EXR pages pixel for pixel, the rest byte
+// for byte; report.json differs (times, processes) and is left out.
+void expect_same_output(const std::string& reference, const std::string& candidate) {
+  size_t compared = 0;
+  for (const auto& entry : fs::directory_iterator(reference)) {
+    const std::string name = entry.path().filename().string();
+    if (name == "report.json") continue;
+    const std::string other = candidate + "/" + name;
+    ASSERT_TRUE(fs::exists(other)) << other;
+    if (entry.path().extension() == ".exr") EXPECT_TRUE(exr_pixels(entry.path().string()) == exr_pixels(other)) << other;
+    else EXPECT_TRUE(test::slurp(entry.path().string()) == test::slurp(other)) << other;
+    ++compared;
+  }
+  EXPECT_GE(compared, 5u) << reference;  // glTF, its .bin, EXR and PNG pages, the display file
+}
+
+nlohmann::json report(const std::string& folder) { return nlohmann::json::parse(test::slurp(folder + "/report.json")); }
+
+// The bake of one process alone, once per test program (ctest runs each test as a program of
+// its own, two at a time: each has its own folder).
+const std::string& alone() {
+  static const std::string folder = [] {
+    const std::string f =
+        test::fresh_folder(std::string("distributed_alone_") + ::testing::UnitTest::GetInstance()->current_test_info()->name()) +
+        "/out";
+    Outcome r = radbake("bake " + kCornell + " -o " + f + kOptions);
+    EXPECT_EQ(r.status, 0) << r.err;
+    return f;
+  }();
+  return folder;
+}
+
+TEST(Distributed, OneToFourRanksWriteWhatOneProcessWrites) {
+  for (int ranks : {1, 2, 3, 4}) {
+    const std::string out = test::fresh_folder("distributed_ranks_" + std::to_string(ranks)) + "/out";
+    Outcome r = test::run(mpirun(ranks) + "bake " + kCornell + " -o " + out + kOptions);
+    ASSERT_EQ(r.status, 0) << r.err;
+    expect_same_output(alone(), out);
+    const nlohmann::json d = report(out)["distribution"];
+    EXPECT_EQ(d["processes"], ranks);
+    EXPECT_EQ(d["peak_memory_bytes_per_process"].size(), size_t(ranks));
+    // The shared stages exchanged results (direct light to all, rows and texels to the first).
+    uint64_t bytes = 0;
+    for (const auto& stage : d["stages"]) bytes += stage["bytes_exchanged"].get<uint64_t>();
+    if (ranks > 1) EXPECT_GT(bytes, 100000u) << d.dump();
+    else EXPECT_EQ(bytes, 0u) << d.dump();
+  }
+  // Alone, without mpirun, nothing is exchanged.
+  EXPECT_EQ(report(alone())["distribution"]["processes"], 1);
+  for (const auto& stage : report(alone())["distribution"]["stages"]) EXPECT_EQ(stage["bytes_exchanged"], 0);
+}
+
+TEST(Distributed, AStoppedTeamResumesOnAnotherNumberOfRanks) {
+  const std::string dir = test::fresh_folder("distributed_resume_ranks");
+  Outcome stop = test::run(mpirun(2) + "bake " + kCornell + kOptions + " --checkpoint " + dir + "/ckpt --stop-after form-factors");
+  ASSERT_EQ(stop.status, 0) << stop.err;
+  EXPECT_NE(stop.out.find("stopped after the form factors"), std::string::npos) << stop.out;
+  EXPECT_FALSE(fs::exists(dir + "/out"));
+  Outcome resume = test::run(mpirun(3) + "bake " + kCornell + " -o " + dir + "/out" + kOptions + " --checkpoint " + dir +
+                             "/ckpt --resume");
+  ASSERT_EQ(resume.status, 0) << resume.err;
+  expect_same_output(alone(), dir + "/out");
+}
+
+TEST(Distributed, ABakeKilledAfterTheFormFactorsResumesToTheSameOutput) {
+  const std::string dir = test::fresh_folder("distributed_kill");
+  // Killed (SIGKILL, as a preempted node) once the gather has saved its first wave: the form
+  // factors and the solve are behind it, in the checkpoint.
+  const std::string bake = std::string(RADBAKE_BINARY) + " bake " + kCornell + " -o " + dir + "/out" + kOptions +
+                           " --checkpoint " + dir + "/ckpt";
+  Outcome killed = test::run(bake + " & pid=$!; while [ ! -e " + dir +
+                             "/ckpt/final_gather_waves.stage ] && kill -0 $pid 2>/dev/null; do sleep 0.01; done; "
+                             "kill -9 $pid; wait $pid; echo status $?");
+  ASSERT_NE(killed.out.find("status 137"), std::string::npos) << "not killed mid-bake: " << killed.out << killed.err;
+  EXPECT_FALSE(fs::exists(dir + "/out")) << "a killed bake left output";
+  for (const char* stage : {"direct_light_waves", "form_factors_waves", "radiosity"})
+    EXPECT_TRUE(fs::exists(dir + "/ckpt/" + stage + ".stage")) << stage;
+  Outcome resume = test::run(bake + " --resume");
+  ASSERT_EQ(resume.status, 0) << resume.err;
+  expect_same_output(alone(), dir + "/out");
+}
+
+TEST(Distributed, ACheckpointOfAnotherBakeOrADamagedOneIsRefused) {
+  const std::string dir = test::fresh_folder("distributed_refused");
+  Outcome first = radbake("bake " + kCornell + kOptions + " --checkpoint " + dir + "/ckpt --stop-after direct-light");
+  ASSERT_EQ(first.status, 0) << first.err;
+  // Another scene, and the same scene with another seed.
+  const std::string ferren = test::source_path("samples/ferren/ferren.gltf");
+  test::expect_one_line_refusal(radbake("bake " + ferren + " -o " + dir + "/a" + kOptions + " --checkpoint " + dir + "/ckpt --resume"),
+                                "another scene or other options", dir + "/a");
+  test::expect_one_line_refusal(radbake("bake " + kCornell + " -o " + dir + "/b" + kOptions + " --seed 2 --checkpoint " + dir +
+                                        "/ckpt --resume"),
+                                "another scene or other options", dir + "/b");
+  // A stage file with one byte changed fails its checksum.
+  const std::string stage = dir + "/ckpt/direct_light_waves.stage";
+  std::string bytes = test::slurp(stage);
+  bytes[bytes.size() / 2] ^= 0x40;
+  std::ofstream(stage, std::ios::binary) << bytes;
+  test::expect_one_line_refusal(radbake("bake " + kCornell + " -o " + dir + "/c" + kOptions + " --checkpoint " + dir + "/ckpt --resume"),
+                                "damaged: its checksum does not match", dir + "/c");
+  // Under mpirun too: one line from the first rank, a non-zero exit, no hang.
+  Outcome team = test::run(mpirun(2) + "bake " + kCornell + " -o " + dir + "/d" + kOptions + " --checkpoint " + dir + "/ckpt --resume");
+  EXPECT_NE(team.status, 0);
+  EXPECT_NE(team.err.find("radbake: error: checkpoint"), std::string::npos) << team.err;
+  EXPECT_FALSE(fs::exists(dir + "/d"));
+}
+
+TEST(Distributed, SlicesOfTheGatherJoinedByMergeAreTheWholeBake) {
+  const std::string dir = test::fresh_folder("distributed_slices");
+  const std::string ckpt = " --checkpoint " + dir + "/ckpt";
+  Outcome solve = radbake("bake " + kCornell + kOptions + ckpt + " --stop-after radiosity");
+  ASSERT_EQ(solve.status, 0) << solve.err;
+  // As a job array would: each slice alone, one of them on two ranks.
+  for (int k = 1; k <= 3; ++k) {
+    const std::string command = "bake " + kCornell + kOptions + ckpt + " --resume --texel-range " + std::to_string(k) + "/3";
+    Outcome slice = k == 2 ? test::run(mpirun(2) + command) : radbake(command);
+    ASSERT_EQ(slice.status, 0) << slice.err;
+  }
+  Outcome merge = radbake("merge " + kCornell + " -o " + dir + "/out" + kOptions + ckpt);
+  ASSERT_EQ(merge.status, 0) << merge.err;
+  expect_same_output(alone(), dir + "/out");
+  // A merge missing a slice is refused, naming it.
+  fs::remove(dir + "/ckpt/final_gather__slice_3_of_3_waves.stage");
+  test::expect_one_line_refusal(radbake("merge " + kCornell + " -o " + dir + "/again" + kOptions + ckpt),
+                                "no final gather, slice 3 of 3", dir + "/again");
+}
+
+}  // namespace
+}  // namespace radbake
