@@ -75,34 +75,55 @@ Vec3 polygon_centroid(const Vec3* p, int count) {
 
 }  // namespace
 
-double polygon_form_factor(Vec3 x, Vec3 n, const Vec3* polygon, int count) {
-  // In double: the edge terms of a small or distant polygon (a 1 cm lamp 3 m away) nearly cancel,
-  // and in float what is left was off by a percent.
-  struct D3 {
-    double x, y, z;
-  };
+namespace {
+
+// Lambert's contour integral without the receiver's normal, 2 pi times the vector form factor:
+// the sum over edges of the angle they subtend times the unit normal of the plane through x and
+// the edge. In double: the edge terms of a small or distant polygon (a 1 cm lamp 3 m away) nearly
+// cancel, and in float what is left was off by a percent.
+struct D3 {
+  double x, y, z;
+};
+D3 contour_integral(Vec3 x, const Vec3* polygon, int count) {
   auto unit_toward = [&](Vec3 p) {
     D3 d{double(p.x) - x.x, double(p.y) - x.y, double(p.z) - x.z};
     double len = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
     return D3{d.x / len, d.y / len, d.z / len};
   };
-  double sum = 0;
+  D3 sum{0, 0, 0};
   for (int i = 0; i < count; ++i) {
     const D3 a = unit_toward(polygon[i]), b = unit_toward(polygon[(i + 1) % count]);
     const D3 c{a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
     const double len = std::sqrt(c.x * c.x + c.y * c.y + c.z * c.z);
     if (!(len > 1e-15)) continue;
-    const double angle = std::atan2(len, a.x * b.x + a.y * b.y + a.z * b.z);
-    sum += angle * (n.x * c.x + n.y * c.y + n.z * c.z) / len;
+    const double angle = std::atan2(len, a.x * b.x + a.y * b.y + a.z * b.z) / len;
+    sum = {sum.x + angle * c.x, sum.y + angle * c.y, sum.z + angle * c.z};
   }
-  return std::fabs(sum) / (2.0 * 3.14159265358979323846);
+  return sum;
+}
+
+}  // namespace
+
+double polygon_form_factor(Vec3 x, Vec3 n, const Vec3* polygon, int count) {
+  const D3 v = contour_integral(x, polygon, count);
+  return std::fabs(n.x * v.x + n.y * v.y + n.z * v.z) / (2.0 * 3.14159265358979323846);
+}
+
+Vec3 polygon_light_direction(Vec3 x, const Vec3* polygon, int count) {
+  const D3 v = contour_integral(x, polygon, count);
+  Vec3 d = normalize(Vec3{float(v.x), float(v.y), float(v.z)});
+  // The winding decides the sign: the light comes from the polygon's side.
+  Vec3 toward{};
+  for (int i = 0; i < count; ++i) toward += polygon[i] - x;
+  return dot(d, toward) < 0 ? -d : d;
 }
 
 std::vector<Rgb> emitter_irradiance(const Elements& e, const Surface& surface, const MaterialSampler& materials,
                                     const RayTracer& tracer, const DirectLightOptions& options, uint64_t seed,
-                                    Progress& progress, ElementRange range) {
+                                    Progress& progress, ElementRange range, std::vector<LightDirection>* directions) {
   range = range.within(e.size());
   std::vector<Rgb> irradiance(range.size());
+  if (directions) directions->assign(range.size(), {});
   const std::vector<Emitter> emitters = collect_emitters(surface, materials);
   if (emitters.empty()) return irradiance;
   // Rays are shared out among the emitters by their unoccluded contribution, so a hundred small
@@ -111,6 +132,7 @@ std::vector<Rgb> emitter_irradiance(const Elements& e, const Surface& surface, c
   progress.begin("area lights", range.size());
   tbb::parallel_for(tbb::blocked_range<size_t>(range.begin, range.end, 64), [&](const tbb::blocked_range<size_t>& r) {
     std::vector<double> factor(emitters.size());
+    std::vector<Vec3> toward(directions ? emitters.size() : 0);  // per emitter, where its seen part lies
     for (size_t i = r.begin(); i < r.end(); ++i) {
       if (!e.valid(i)) continue;
       const Vec3 n = e.normal[i], ng = surface.normal[e.triangle[i]];
@@ -128,11 +150,15 @@ std::vector<Rgb> emitter_irradiance(const Elements& e, const Surface& surface, c
       int contributing = 0;
       for (size_t k = 0; k < emitters.size(); ++k) {
         factor[k] = 0;
+        if (directions) toward[k] = {};
         if (emitters[k].triangle == e.triangle[i]) continue;
         for (const Vec3& x : points) {
           Vec3 polygon[4];
           const int corners = visible_part(emitters[k], x, n, e.offset[i], polygon);
-          if (corners >= 3) factor[k] += polygon_form_factor(x, n, polygon, corners) / kFormFactorPoints;
+          if (corners < 3) continue;
+          const double f = polygon_form_factor(x, n, polygon, corners);
+          factor[k] += f / kFormFactorPoints;
+          if (directions) toward[k] += polygon_light_direction(x, polygon, corners) * float(f);
         }
         total += factor[k] * sum(emitters[k].emission);
         contributing += factor[k] > 0;
@@ -142,11 +168,14 @@ std::vector<Rgb> emitter_irradiance(const Elements& e, const Surface& surface, c
       // than its unoccluded share says (the bright one may be behind a wall).
       const int least = std::clamp(budget / std::max(1, contributing), 1, options.area_light_rays);
       Rgb h{};
+      LightDirection from{};
       for (size_t k = 0; k < emitters.size(); ++k) {
         if (factor[k] <= 0) continue;
         const Emitter& em = emitters[k];
+        const Rgb before = h;
         if (em.uniform && !options.shadow_rays) {  // nothing can come between: the exact form factor
           h += em.emission * float(factor[k]);
+          if (directions) from.add(h - before, normalize(toward[k]));
           continue;
         }
         double share = factor[k] * sum(em.emission) / total;
@@ -211,8 +240,10 @@ std::vector<Rgb> emitter_irradiance(const Elements& e, const Surface& surface, c
         if (probe < rays) trace(probe, probe_patterns);
         if (probe >= rays || (visible > 0 && hidden > 0)) trace(rays, full_patterns);
         if (weights > 0) h += seen * float(factor[k] / weights);
+        if (directions) from.add(h - before, normalize(toward[k]));
       }
       irradiance[i - range.begin] = h;
+      if (directions) (*directions)[i - range.begin] = from;
     }
     progress.advance(r.size());
   });

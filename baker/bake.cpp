@@ -80,7 +80,7 @@ PlanDecision solve_outcome(const RadiositySolution& s, const SolveOptions& optio
 std::vector<Rgb> shared_direct_light(const Scene& scene, const Elements& elements, const Surface& surface,
                                      const MaterialSampler& materials, const RayTracer& tracer,
                                      const BakeOptions& options, const EffectPlan& plan, Progress& progress,
-                                     double& delivered_power) {
+                                     double& delivered_power, std::vector<LightDirection>& directions) {
   DirectLightOptions direct = options.direct;
   direct.shadow_rays = plan.shadow_rays;
   direct.cull_unlit = !plan.exhaustive;
@@ -88,6 +88,8 @@ std::vector<Rgb> shared_direct_light(const Scene& scene, const Elements& element
   const size_t n = elements.size();
   const std::vector<size_t> starts = chunk_starts(n, n / 256, 1024, 256, {});
   std::vector<Rgb> irradiance(n);
+  const bool directional = options.directional != Directional::None;
+  if (directional) directions.assign(n, {});
   std::vector<double> delivered(starts.size() - 1, 0.0);
   SharedStage stage;
   stage.name = "direct light";
@@ -96,13 +98,20 @@ std::vector<Rgb> shared_direct_light(const Scene& scene, const Elements& element
   stage.compute = [&](size_t chunk) {
     const ElementRange range{starts[chunk], starts[chunk + 1]};
     Progress quiet;
-    std::vector<Rgb> lights_and_sky =
-        punctual_irradiance(elements, surface, scene.lights, tracer, direct, options.seed, quiet, range);
+    std::vector<LightDirection> from_lights, from_sky, from;
+    std::vector<Rgb> lights_and_sky = punctual_irradiance(elements, surface, scene.lights, tracer, direct, options.seed,
+                                                          quiet, range, directional ? &from_lights : nullptr);
     if (options.sky.enabled) {
-      const std::vector<Rgb> sky = sky_irradiance(elements, surface, tracer, options.sky, options.seed, quiet, range);
+      const std::vector<Rgb> sky = sky_irradiance(elements, surface, tracer, options.sky, options.seed, quiet, range,
+                                                  directional ? &from_sky : nullptr);
       for (size_t k = 0; k < range.size(); ++k) lights_and_sky[k] += sky[k];
     }
-    std::vector<Rgb> total = emitter_irradiance(elements, surface, materials, tracer, direct, options.seed, quiet, range);
+    std::vector<Rgb> total = emitter_irradiance(elements, surface, materials, tracer, direct, options.seed, quiet, range,
+                                                directional ? &from : nullptr);
+    for (size_t k = 0; k < from.size(); ++k) {
+      from[k] += from_lights[k];
+      if (!from_sky.empty()) from[k] += from_sky[k];
+    }
     double power = 0;
     for (size_t k = 0; k < range.size(); ++k) {
       const size_t i = range.begin + k;
@@ -113,14 +122,18 @@ std::vector<Rgb> shared_direct_light(const Scene& scene, const Elements& element
     ByteWriter out;
     out.put(power);
     out.put_vector(total);
+    out.put_vector(from);
     return out.bytes();
   };
   stage.take = [&](size_t chunk, const Bytes& result) {
     ByteReader in(result);
     delivered[chunk] = in.get<double>();
     const std::vector<Rgb> values = in.get_vector<Rgb>();
-    if (values.size() != starts[chunk + 1] - starts[chunk]) throw TruncatedBytes();
+    const std::vector<LightDirection> from = in.get_vector<LightDirection>();
+    const size_t count = starts[chunk + 1] - starts[chunk];
+    if (values.size() != count || from.size() != (directional ? count : 0)) throw TruncatedBytes();
     std::copy(values.begin(), values.end(), irradiance.begin() + std::ptrdiff_t(starts[chunk]));
+    if (directional) std::copy(from.begin(), from.end(), directions.begin() + std::ptrdiff_t(starts[chunk]));
   };
   run_shared_stage(stage, *options.sharing.team, options.sharing.store, options.sharing.resume, tracer, progress);
   delivered_power = 0;
@@ -188,6 +201,7 @@ std::optional<GatheredLight> shared_gather(const Elements& elements, const Patch
   if (team.first()) {
     whole.irradiance.resize(n);
     whole.harmonic_distance.assign(n, INFINITY);
+    if (options.directional != Directional::None) whole.mean_direction.resize(n);
   }
   SharedStage stage;
   stage.name = "final gather";
@@ -195,10 +209,12 @@ std::optional<GatheredLight> shared_gather(const Elements& elements, const Patch
   stage.compute = [&](size_t chunk) {
     const GatherTrace t = trace_gather(elements, patches, surface, tracer, inputs, patch_exitance, direct,
                                        options.gather_rays, options.near_field, options.seed,
-                                       ElementRange{starts[chunk], starts[chunk + 1]});
+                                       ElementRange{starts[chunk], starts[chunk + 1]},
+                                       options.directional != Directional::None);
     ByteWriter out;
     out.put_vector(t.irradiance);
     out.put_vector(t.harmonic_distance);
+    out.put_vector(t.mean_direction);
     out.put_vector(t.landings);
     out.put(t.lost);
     out.put(t.cast);
@@ -208,9 +224,14 @@ std::optional<GatheredLight> shared_gather(const Elements& elements, const Patch
     ByteReader in(result);
     const std::vector<Rgb> irradiance = in.get_vector<Rgb>();
     const std::vector<float> distance = in.get_vector<float>();
+    const std::vector<LightDirection> mean_direction = in.get_vector<LightDirection>();
     landings[chunk] = in.get_vector<NearLanding>();
     const size_t count = starts[chunk + 1] - starts[chunk];
-    if (irradiance.size() != count || distance.size() != count) throw TruncatedBytes();
+    if (irradiance.size() != count || distance.size() != count ||
+        mean_direction.size() != (options.directional != Directional::None ? count : 0))
+      throw TruncatedBytes();
+    if (!mean_direction.empty())
+      std::copy(mean_direction.begin(), mean_direction.end(), whole.mean_direction.begin() + std::ptrdiff_t(starts[chunk]));
     for (const NearLanding& l : landings[chunk])
       if (l.receiver < starts[chunk] || l.receiver >= starts[chunk + 1] || l.struck >= n) throw TruncatedBytes();
     std::copy(irradiance.begin(), irradiance.end(), whole.irradiance.begin() + std::ptrdiff_t(starts[chunk]));
@@ -301,6 +322,8 @@ void interreflect(const Elements& elements, const Surface& surface, const RayTra
                            options.gather_filter);
   });
   check_element_values("the final gather", result.irradiance, checked, patches.patch_of_element);
+  if (options.directional != Directional::None)
+    result.light_directions = total_light_directions(result.light_directions, gathered->mean_direction, result.irradiance);
   for (size_t i = 0; i < elements.size(); ++i) result.irradiance[i] += result.direct[i];
   report.balance = energy_balance(elements, patches, light_between.transport, delivered_power, result.irradiance);
 
@@ -328,7 +351,8 @@ void compute_radiosity(const Scene& scene, const Elements& elements, const Surfa
   StageClock clock(result.report.stage_times);
   double delivered_power = 0;
   result.direct = clock.run("direct light", [&] {
-    return shared_direct_light(scene, elements, surface, materials, tracer, options, plan, progress, delivered_power);
+    return shared_direct_light(scene, elements, surface, materials, tracer, options, plan, progress, delivered_power,
+                               result.light_directions);
   });
   check_element_values("direct light", result.direct, checked);
   if (options.sharing.stop_after == StopAfter::DirectLight) throw StoppedEarly("direct light");
@@ -380,6 +404,8 @@ BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& given
   if (sliced && (options.method != Method::Radiosity || !plan.interreflection))
     throw InputError("this bake has no final gather to slice: the plan simulates direct light only");
   if (sliced && !options.sharing.store) throw InputError("slices of the final gather are kept in a checkpoint: give one");
+  if (options.directional != Directional::None && (options.method != Method::Radiosity || options.store != StoredQuantity::Irradiance))
+    throw InputError("directional lightmaps are of the radiosity bake's irradiance: --method radiosity, --store irradiance");
   if (team.size() > 1 && options.method == Method::PathTrace)
     throw InputError("the path tracer bakes in one process: run it without mpirun");
   std::unique_ptr<tbb::global_control> thread_limit;
@@ -450,6 +476,10 @@ BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& given
   if (options.store == StoredQuantity::Radiosity) radiosity = radiosity_of(elements, result.irradiance);
   const std::vector<Rgb>& stored = radiosity.empty() ? result.irradiance : radiosity;
   result.pages = clock.run("dilation", [&] { return compose_pages(elements, stored, surface.pages); });
+  if (options.directional != Directional::None)
+    result.directional = clock.run("directional pages", [&] {
+      return directional_pages(options.directional, elements, result.irradiance, result.light_directions, surface.pages);
+    });
   result.vertex_values =
       clock.run("vertex values", [&] { return vertex_values(elements, surface, atlas, result.pages, stored); });
   check_vertex_values(result.vertex_values, scene);
@@ -476,6 +506,17 @@ BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& given
       }
       return 0;
     });
+  }
+  if (options.probes.enabled) {
+    const std::vector<Rgb> exitance = radiosity.empty() ? radiosity_of(elements, result.irradiance) : radiosity;
+    result.probes = clock.run("light probes", [&] {
+      LightProbes probes = place_probes(surface, *tracer, options.probes);
+      light_probes(probes, elements, exitance, surface, materials, scene.lights, options.sky, *tracer, options.probes,
+                   options.seed, progress);
+      return probes;
+    });
+    report.light_probes = result.probes.probes.size();
+    report.light_probe_spacing = result.probes.spacing;
   }
   report.surfaces = surface_statistics(scene, surface, elements, result.irradiance);
 

@@ -9,12 +9,14 @@
 #include <vector>
 
 #include "baker/direct_light.h"
+#include "baker/directional_lightmaps.h"
 #include "baker/elements.h"
 #include "baker/energy_balance.h"
 #include "baker/finish.h"
 #include "baker/gather_filter.h"
 #include "baker/glare.h"
 #include "baker/interreflection.h"
+#include "baker/light_probes.h"
 #include "baker/luminance_view.h"
 #include "baker/material_sampler.h"
 #include "baker/path_tracer.h"
@@ -75,6 +77,8 @@ struct BakeOptions {
   bool keep_direct = false;     // keep BakeResult::direct (for debug dumps); costs 12 bytes per texel
   size_t preview_every = 0;     // with a preview callback: pages of the estimate every N shots or sweeps
   Sharing sharing;              // a team of processes, a checkpoint, a slice of the gather (sharing.h)
+  Directional directional = Directional::None;  // pages of where the light comes from (directional_lightmaps.h)
+  ProbeOptions probes;          // light probes in the empty space (light_probes.h)
 };
 
 struct StageTime {
@@ -104,6 +108,8 @@ struct BakeReport {
   double path_mean_vertices = 0;
   std::vector<SurfaceStatistics> surfaces;  // per instance, lux
   std::vector<std::string> warnings;
+  size_t light_probes = 0;             // with BakeOptions::probes: how many, and at what spacing (m)
+  float light_probe_spacing = 0;
   int processes = 1;                   // the team that baked it
   std::vector<StageTraffic> traffic;   // per shared stage: bytes exchanged, compute and busiest seconds
   std::vector<uint64_t> process_peak_bytes;  // per process, its peak resident set before the first writes
@@ -115,6 +121,8 @@ struct BakeResult {
   Elements elements;                               // kept for reports, tests and debug dumps
   std::vector<Rgb> irradiance;                     // per element, lux
   std::vector<Rgb> direct;                         // its direct part, lux; empty unless keep_direct
+  std::vector<LightDirection> light_directions;    // with BakeOptions::directional: per element, where its light comes from
+  std::vector<std::vector<LightmapPage>> directional;  // BakeOptions::directional's pages (directional_pages)
   std::vector<uint32_t> patch_of_element;          // UINT32_MAX for buried elements
   std::vector<float> standard_error;               // Method::PathTrace: per element, lux; else empty
   std::vector<Sensor> sensors;                     // BakeOptions::sensors, then the work plane's
@@ -122,6 +130,7 @@ struct BakeResult {
   std::vector<FisheyeImage> views;                 // per BakeOptions::views
   std::vector<PerspectiveImage> perspectives;      // per BakeOptions::views, the same eye
   std::vector<Glare> glare;                        // per view
+  LightProbes probes;                              // with BakeOptions::probes
   WorkPlane work_plane;                            // its sensor_at indexes `sensors`
   BakeReport report;
 };

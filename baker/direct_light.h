@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "baker/elements.h"
+#include "baker/light_direction.h"
 #include "baker/material_sampler.h"
 #include "baker/progress.h"
 #include "baker/ray_tracer.h"
@@ -25,20 +26,26 @@ struct DirectLightOptions {
   std::vector<uint8_t> light_traced;  // per light: 0 skips it (the plan culled it); empty: every light
 };
 
-// Both return the irradiance of the elements in `range`, the first at index 0.
+// Both return the irradiance of the elements in `range`, the first at index 0; with
+// `directions`, also where it comes from (light_direction.h), the same way.
 std::vector<Rgb> punctual_irradiance(const Elements& elements, const Surface& surface,
                                      const std::vector<Light>& lights, const RayTracer& tracer,
                                      const DirectLightOptions& options, uint64_t seed, Progress& progress,
-                                     ElementRange range = {});
+                                     ElementRange range = {}, std::vector<LightDirection>* directions = nullptr);
 
 std::vector<Rgb> emitter_irradiance(const Elements& elements, const Surface& surface, const MaterialSampler& materials,
                                     const RayTracer& tracer, const DirectLightOptions& options, uint64_t seed,
-                                    Progress& progress, ElementRange range = {});
+                                    Progress& progress, ElementRange range = {},
+                                    std::vector<LightDirection>* directions = nullptr);
 
 // Irradiance at point x (unit normal n) from a Lambertian polygon of unit exitance, unoccluded:
 // the point-to-polygon form factor by Lambert's contour integral. The polygon must lie on the
 // side of x's tangent plane that n points to.
 double polygon_form_factor(Vec3 x, Vec3 n, const Vec3* polygon, int count);
+
+// The same contour integral without the normal: the unit direction the polygon's light arrives
+// from on average (its vector form factor, normalised), for directional lightmaps.
+Vec3 polygon_light_direction(Vec3 x, const Vec3* polygon, int count);
 
 // Unoccluded irradiance in lux from a punctual light of the given kind, ignoring shadows: the
 // closed forms the tests compare against (inverse square, cosine, spot cone, range window).

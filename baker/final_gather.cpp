@@ -209,11 +209,12 @@ GatherInputs gather_inputs(const Elements& e, const Patches& patches, const Surf
 GatherTrace trace_gather(const Elements& e, const Patches& patches, const Surface& surface, const RayTracer& tracer,
                          const GatherInputs& inputs, const std::vector<Rgb>& patch_exitance,
                          const std::vector<Rgb>& direct, uint32_t rays, bool near_field, uint64_t seed,
-                         ElementRange range) {
+                         ElementRange range, bool directions) {
   range = range.within(e.size());
   GatherTrace out;
   out.irradiance.resize(range.size());
   out.harmonic_distance.assign(range.size(), INFINITY);
+  if (directions) out.mean_direction.resize(range.size());
   // Fixed blocks of elements, each with its own list of near landings, joined in block order: the
   // same list whatever the threads.
   constexpr size_t kBlock = 256;
@@ -229,6 +230,7 @@ GatherTrace trace_gather(const Elements& e, const Patches& patches, const Surfac
       Rng rng(seed, Stream::Gather, i);
       const uint32_t origin_pattern = rng.next_u32(), direction_pattern = rng.next_u32();
       Rgb sum{};
+      LightDirection from{};
       double nearness = 0;  // sum of 1 / distance
       struck.clear();
       for (uint32_t k = 0; k < rays; ++k) {
@@ -245,8 +247,11 @@ GatherTrace trace_gather(const Elements& e, const Patches& patches, const Surfac
         if (near_field && at.distance < inputs.near_reach[at.patch]) {
           sum += e.reflectance[at.element] * direct[at.element];
           struck.push_back(at.element);
+          if (directions)
+            from.add(e.reflectance[at.element] * (direct[at.element] + inputs.patch_indirect[at.patch]), dir);
         } else {
           sum += patch_exitance[at.patch];
+          if (directions) from.add(patch_exitance[at.patch], dir);
         }
       }
       // Until the near texels' own light is solved, their patches' stands in for it.
@@ -259,6 +264,10 @@ GatherTrace trace_gather(const Elements& e, const Patches& patches, const Surfac
       }
       // With cosine-distributed directions, irradiance is the mean exitance seen (E = pi * mean L).
       out.irradiance[i - range.begin] = sum / float(rays);
+      if (directions) {  // over what the rays found, as the directions weigh it
+        const Rgb per{sum.x > 0 ? 1 / sum.x : 0, sum.y > 0 ? 1 / sum.y : 0, sum.z > 0 ? 1 / sum.z : 0};
+        out.mean_direction[i - range.begin] = from * per;
+      }
       if (nearness > 0) out.harmonic_distance[i - range.begin] = float(double(rays) / nearness);
       my_cast += rays;
     }
@@ -278,6 +287,7 @@ GatheredLight finish_gather(const Elements& e, const Patches& patches, const Pat
   GatheredLight out;
   out.irradiance = std::move(whole.irradiance);
   out.harmonic_distance = std::move(whole.harmonic_distance);
+  out.mean_direction = std::move(whole.mean_direction);
   if (rays > 0 && near_field) solve_near_indirect(e, patches, inputs.patch_indirect, whole.landings, rays, out.irradiance);
   const NearTally near = tally_near_field(e, patches, patch_exitance, direct, out.irradiance, whole.landings, rays);
   std::vector<Rgb> correction = far_field_correction(patches, transport, near);

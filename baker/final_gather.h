@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "baker/elements.h"
+#include "baker/light_direction.h"
 #include "baker/patch_transport.h"
 #include "baker/patches.h"
 #include "baker/progress.h"
@@ -25,6 +26,10 @@ struct GatherStats {
 
 struct GatheredLight {
   std::vector<Rgb> irradiance;           // per element, lux
+  // Per element with directions asked for: where the gathered light comes from, per channel
+  // divided by the irradiance the rays found (a mean direction, length 1 when it all comes from
+  // one direction), so it stays right when the near field and the filter change the irradiance.
+  std::vector<LightDirection> mean_direction;
   // Per element, metres: the harmonic mean of its rays' distances to what they struck (rays
   // leaving the scene count as infinitely far; infinite if all did), how near other surfaces are.
   std::vector<float> harmonic_distance;
@@ -40,6 +45,7 @@ struct NearLanding {
 struct GatherTrace {
   std::vector<Rgb> irradiance;          // per element of the range, lux, before the near field is solved
   std::vector<float> harmonic_distance; // per element of the range, metres
+  std::vector<LightDirection> mean_direction;  // per element of the range, as GatheredLight's; empty unless asked
   std::vector<NearLanding> landings;    // by receiver, then struck element
   uint64_t lost = 0, cast = 0;          // rays that struck back faces or buried texels, rays cast
 };
@@ -58,7 +64,7 @@ GatherInputs gather_inputs(const Elements& elements, const Patches& patches, con
 GatherTrace trace_gather(const Elements& elements, const Patches& patches, const Surface& surface,
                          const RayTracer& tracer, const GatherInputs& inputs, const std::vector<Rgb>& patch_exitance,
                          const std::vector<Rgb>& direct, uint32_t rays, bool near_field, uint64_t seed,
-                         ElementRange range);
+                         ElementRange range, bool directions = false);
 
 // The near field solved and its light balanced over the patches, from the traces of all the
 // ranges in element order (`whole`: their irradiance, harmonic distance and landings joined).

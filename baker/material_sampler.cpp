@@ -90,7 +90,35 @@ MaterialSampler::MaterialSampler(const Scene& scene, const Surface& surface, flo
     metallic_texture_.push_back(
         m.metallic_roughness_texture.present() ? texture_for(m.metallic_roughness_texture.image, Decode::Linear) : -1);
     emissive_texture_.push_back(m.emissive_texture.present() ? texture_for(m.emissive_texture.image, Decode::Srgb) : -1);
+    normal_texture_.push_back(m.normal_texture.present() ? texture_for(m.normal_texture.image, Decode::Linear) : -1);
   }
+}
+
+Vec3 MaterialSampler::mapped_normal(uint32_t triangle, Vec2 bary, float spacing) const {
+  const Vec3 n = surface_.shading_normal(triangle, bary);
+  const int mi = surface_.material[triangle];
+  if (mi < 0 || normal_texture_[size_t(mi)] < 0) return n;
+  const Material& m = scene_.materials[size_t(mi)];
+  const MeshInstance& inst = scene_.instances[surface_.instance[triangle]];
+  if (size_t(m.normal_texture.tex_coord) >= inst.texcoords.size() || inst.texcoords[size_t(m.normal_texture.tex_coord)].empty())
+    return n;
+  // Tangent along +u, bitangent against +v (glTF's image rows run down while its normal maps'
+  // +Y points up), from the triangle's positions and texture coordinates.
+  const std::vector<Vec2>& set = inst.texcoords[size_t(m.normal_texture.tex_coord)];
+  Vec2 uv[3];
+  for (int k = 0; k < 3; ++k) uv[k] = apply_transform(m.normal_texture.transform, set[surface_.corner_vertex[3 * triangle + k]]);
+  const Vec3* p = &surface_.corners[3 * triangle];
+  const Vec3 e1 = p[1] - p[0], e2 = p[2] - p[0];
+  const Vec2 d1 = uv[1] - uv[0], d2 = uv[2] - uv[0];
+  const float det = cross2(d1, d2);
+  if (!(std::fabs(det) > 1e-20f)) return n;
+  Vec3 tangent = (e1 * d2.y - e2 * d1.y) / det, bitangent = (e2 * d1.x - e1 * d2.x) / det * -1.0f;
+  tangent = normalize(tangent - n * dot(n, tangent));
+  bitangent = normalize(bitangent - n * dot(n, bitangent) - tangent * dot(tangent, bitangent));
+  if (length(tangent) == 0 || length(bitangent) == 0) return n;
+  const Vec3 t = sample(m.normal_texture, normal_texture_[size_t(mi)], triangle, bary, spacing) * 2.0f - Vec3{1, 1, 1};
+  const Vec3 mapped = normalize(tangent * (t.x * m.normal_scale) + bitangent * (t.y * m.normal_scale) + n * t.z);
+  return length(mapped) > 0 ? mapped : n;
 }
 
 int MaterialSampler::texture_for(int image_index, Decode decode) {

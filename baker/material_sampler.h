@@ -50,6 +50,11 @@ class MaterialSampler {
   // False for the triangles every ray stops at (opaque and no glazing): most of them.
   bool see_through(uint32_t triangle) const;
 
+  // The shading normal at a point, the material's normal map applied (tangents from the map's
+  // texture coordinates, as viewers derive them for a mesh without TANGENT); the interpolated
+  // normal where there is none. For showing baked directional light on the bumps (prelit_pages).
+  Vec3 mapped_normal(uint32_t triangle, Vec2 bary, float spacing) const;
+
   // True when neither reflectance nor emission varies over the triangle (no textures, no COLOR_0).
   bool is_uniform(uint32_t triangle) const;
   bool emits(uint32_t triangle) const;
@@ -73,7 +78,7 @@ class MaterialSampler {
   std::vector<Texture> textures_;
   std::map<std::pair<int, Decode>, int> texture_of_image_;  // (image, decoding) -> textures_
   // Per material: index into textures_ for base colour, metallic, emission (-1 when absent).
-  std::vector<int> base_texture_, metallic_texture_, emissive_texture_, alpha_texture_;
+  std::vector<int> base_texture_, metallic_texture_, emissive_texture_, alpha_texture_, normal_texture_;
   std::vector<float> pane_transmittance_;  // per material: what its glazing lets through along its normal
   std::vector<float> pane_diffuse_ratio_;  // per material: its diffuse transmittance over that
   std::vector<float> clear_pane_along_normal_;  // per material: a clear pane of its index, along the normal

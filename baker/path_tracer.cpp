@@ -137,8 +137,18 @@ class PathTracer {
   // One path's estimate of the irradiance at footprint point u of element i, lux; `bounces`
   // counts the surfaces it reached.
   Rgb estimate(size_t i, Vec2 footprint_u, Vec2 first_direction_u, Rng& rng, uint64_t& bounces) const {
-    PathVertex v{footprint_point(e_, surface_, i, footprint_u), surface_.normal[e_.triangle[i]], e_.normal[i],
-                 e_.offset[i], e_.triangle[i]};
+    return estimate_from({footprint_point(e_, surface_, i, footprint_u), surface_.normal[e_.triangle[i]], e_.normal[i],
+                          e_.offset[i], e_.triangle[i]},
+                         first_direction_u, rng, bounces);
+  }
+
+  // The same at a point in the air facing unit `normal` (a light meter, a probe's direction).
+  Rgb estimate_at(Vec3 point, Vec3 normal, Vec2 first_direction_u, Rng& rng, uint64_t& bounces) const {
+    return estimate_from({point, normal, normal, 0.0f, UINT32_MAX}, first_direction_u, rng, bounces);
+  }
+
+ private:
+  Rgb estimate_from(PathVertex v, Vec2 first_direction_u, Rng& rng, uint64_t& bounces) const {
     Rgb result = direct_light(v, rng);
     Rgb throughput{1, 1, 1};
     Vec2 u = first_direction_u;
@@ -170,7 +180,6 @@ class PathTracer {
     return result;
   }
 
- private:
   // Irradiance at v straight from the light sources: every punctual light, and one point of one
   // emitting triangle, each behind a shadow ray.
   Rgb direct_light(const PathVertex& v, Rng& rng) const {
@@ -268,6 +277,25 @@ class PathTracer {
 };
 
 }  // namespace
+
+std::vector<Rgb> path_trace_points(const std::vector<Vec3>& points, const std::vector<Vec3>& normals, const Elements& e,
+                                   const Surface& surface, const MaterialSampler& materials,
+                                   const std::vector<Light>& lights, const SkyLight* sky, const RayTracer& tracer,
+                                   uint32_t samples, uint64_t seed) {
+  const PathTracer tracer_of_paths(e, surface, materials, lights, sky, tracer);
+  std::vector<Rgb> out(points.size());
+  samples = std::max<uint32_t>(1, samples);
+  tbb::parallel_for(size_t(0), points.size(), [&](size_t i) {
+    Rng rng(seed, Stream::PathTrace, (uint64_t(1) << 48) ^ i);
+    const uint32_t pattern = rng.next_u32();
+    uint64_t bounces = 0;
+    Rgb sum{};
+    for (uint32_t k = 0; k < samples; ++k)
+      sum += tracer_of_paths.estimate_at(points[i], normals[i], cmj_sample(k, samples, pattern), rng, bounces);
+    out[i] = sum / float(samples);
+  });
+  return out;
+}
 
 PathTraced path_trace(const Elements& e, const Surface& surface, const MaterialSampler& materials,
                       const std::vector<Light>& lights, const SkyLight* sky, const RayTracer& tracer,

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "baker/directional_lightmaps.h"
 #include "baker/material_sampler.h"
 #include "baker/vertex_refinement.h"
 
@@ -11,19 +12,17 @@ namespace {
 
 constexpr float kPi = 3.14159265358979323846f;
 
-// Texture texels per lightmap texel along a side, for the triangle's base colour texture.
-float texture_texels_per_lightmap_texel(const Scene& scene, const Surface& surface, uint32_t t) {
-  const Material& m = material_of(scene, surface.material[t]);
-  if (!m.base_color_texture.present()) return 0;
+// Texture texels per lightmap texel along a side, for one of the triangle's textures.
+float texels_per_lightmap_texel(const Scene& scene, const Surface& surface, uint32_t t, const TextureRef& ref) {
+  if (!ref.present()) return 0;
   const MeshInstance& inst = scene.instances[surface.instance[t]];
-  const size_t set = size_t(m.base_color_texture.tex_coord);
+  const size_t set = size_t(ref.tex_coord);
   if (set >= inst.texcoords.size() || inst.texcoords[set].empty()) return 0;
-  const Image& image = scene.images[size_t(m.base_color_texture.image)];
+  const Image& image = scene.images[size_t(ref.image)];
   Vec2 uv[3];
   for (int k = 0; k < 3; ++k) {
     const Vec2 p = inst.texcoords[set][surface.corner_vertex[3 * t + k]];
-    uv[k] = {p.x * m.base_color_texture.transform.scale.x * float(image.width),
-             p.y * m.base_color_texture.transform.scale.y * float(image.height)};
+    uv[k] = {p.x * ref.transform.scale.x * float(image.width), p.y * ref.transform.scale.y * float(image.height)};
   }
   const Vec2* lm = &surface.corner_lightmap[3 * t];
   const float lm_area = std::fabs(cross2(lm[1] - lm[0], lm[2] - lm[0]));
@@ -31,13 +30,20 @@ float texture_texels_per_lightmap_texel(const Scene& scene, const Surface& surfa
   return lm_area > 0 ? std::sqrt(uv_area / lm_area) : 0;
 }
 
+// For the triangle's base colour texture, or its normal map where directional light shows it.
+float texture_texels_per_lightmap_texel(const Scene& scene, const Surface& surface, uint32_t t, bool normals) {
+  const Material& m = material_of(scene, surface.material[t]);
+  return std::max(texels_per_lightmap_texel(scene, surface, t, m.base_color_texture),
+                  normals ? texels_per_lightmap_texel(scene, surface, t, m.normal_texture) : 0.0f);
+}
+
 }  // namespace
 
-int automatic_prelit_detail(const Scene& scene, const Surface& surface, int max_page_size) {
+int automatic_prelit_detail(const Scene& scene, const Surface& surface, int max_page_size, bool normal_maps) {
   std::vector<std::pair<float, float>> ratio_and_area;
   double total = 0;
   for (uint32_t t = 0; t < surface.triangle_count(); ++t) {
-    const float ratio = texture_texels_per_lightmap_texel(scene, surface, t);
+    const float ratio = texture_texels_per_lightmap_texel(scene, surface, t, normal_maps);
     if (ratio <= 0 || !std::isfinite(ratio) || surface.area[t] <= 0) continue;
     ratio_and_area.push_back({ratio, surface.area[t]});
     total += surface.area[t];
@@ -61,7 +67,8 @@ int automatic_prelit_detail(const Scene& scene, const Surface& surface, int max_
 PrelitPages prelit_pages(const Scene& scene, const Surface& surface, const std::vector<LightmapPage>& lightmap,
                          const PrelitOptions& options) {
   PrelitPages out;
-  out.detail = options.detail > 0 ? options.detail : automatic_prelit_detail(scene, surface, options.max_page_size);
+  out.detail = options.detail > 0 ? options.detail
+                                  : automatic_prelit_detail(scene, surface, options.max_page_size, options.sh != nullptr);
   const int n = out.detail;
   const MaterialSampler materials(scene, surface, options.emission_scale);
   out.pages.resize(lightmap.size());
@@ -93,7 +100,15 @@ PrelitPages prelit_pages(const Scene& scene, const Surface& surface, const std::
         if (b0 < 0 || b1 < 0 || b2 < 0) continue;  // centre outside: dilation fills it from its chart
         const Vec2 bary{b1, b2};
         // Pages are dilated, so every texel read holds light of the nearest chart.
-        const Rgb value = sample_bilinear(light, q * (1.0f / float(n)));
+        const Vec2 at = q * (1.0f / float(n));
+        Rgb value = sample_bilinear(light, at);
+        if (options.sh) {
+          const auto& sh = *options.sh;
+          const size_t pg = surface.page[t];
+          value = IrradianceSh{sample_bilinear(sh[0][pg], at), sample_bilinear(sh[1][pg], at),
+                               sample_bilinear(sh[2][pg], at), sample_bilinear(sh[3][pg], at)}
+                      .at(materials.mapped_normal(t, bary, spacing));
+        }
         const Rgb emitted = materials.emission(t, bary, spacing);
         const Rgb seen = options.lightmap_is_irradiance ? materials.reflectance(t, bary, spacing) * value + emitted : value;
         const size_t i = size_t(y) * size_t(page.width) + size_t(x);

@@ -20,6 +20,9 @@ struct PrelitOptions {
   int max_page_size = 4096;    // a pre-lit page side never passes this (automatic detail only)
   float emission_scale = 1;    // as BakeOptions::emission_scale
   bool lightmap_is_irradiance = true;  // false: the pages hold radiosity (lm/m2 leaving)
+  // --directional sh's pages (c0, c1x, c1y, c1z; directional_lightmaps.h): the irradiance is read
+  // for each pre-lit texel's normal, its normal map applied, so the bumps show. Null: the lightmap's.
+  const std::vector<std::vector<LightmapPage>>* sh = nullptr;
 };
 
 struct PrelitPages {
@@ -27,10 +30,11 @@ struct PrelitPages {
   int detail = 1;
 };
 
-// The detail at which base colour textures keep their texels: the area-weighted median, over
-// textured triangles, of texture texels per lightmap texel along a side, rounded up to 1, 2 or 4,
-// and no larger than keeps pages within `max_page_size`. 1 when nothing is textured.
-int automatic_prelit_detail(const Scene& scene, const Surface& surface, int max_page_size);
+// The detail at which base colour textures (and with `normal_maps` normal maps) keep their texels:
+// the area-weighted median, over textured triangles, of texture texels per lightmap texel along a
+// side, rounded up to 1, 2 or 4, and no larger than keeps pages within `max_page_size`. 1 when
+// nothing is textured.
+int automatic_prelit_detail(const Scene& scene, const Surface& surface, int max_page_size, bool normal_maps = false);
 
 PrelitPages prelit_pages(const Scene& scene, const Surface& surface, const std::vector<LightmapPage>& lightmap,
                          const PrelitOptions& options);

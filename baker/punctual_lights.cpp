@@ -41,9 +41,10 @@ Rgb punctual_light_irradiance(const Light& light, Vec3 x, Vec3 n, Vec3* to_light
 
 std::vector<Rgb> punctual_irradiance(const Elements& e, const Surface& surface, const std::vector<Light>& lights,
                                      const RayTracer& tracer, const DirectLightOptions& options, uint64_t seed,
-                                     Progress& progress, ElementRange range) {
+                                     Progress& progress, ElementRange range, std::vector<LightDirection>* directions) {
   range = range.within(e.size());
   std::vector<Rgb> irradiance(range.size());
+  if (directions) directions->assign(range.size(), {});
   if (lights.empty()) return irradiance;
   const int rays = std::max(1, options.punctual_rays);
   progress.begin("punctual lights", range.size());
@@ -53,6 +54,7 @@ std::vector<Rgb> punctual_irradiance(const Elements& e, const Surface& surface, 
       const Vec3 ng = surface.normal[e.triangle[i]];
       Rng rng(seed, Stream::DirectLight, i);
       Rgb total{};
+      LightDirection from{};
       for (size_t l = 0; l < lights.size(); ++l) {
         uint32_t pattern = rng.next_u32();  // drawn for culled lights too, so the others' samples stay the same
         if (l < options.light_traced.size() && !options.light_traced[l]) continue;
@@ -65,13 +67,17 @@ std::vector<Rgb> punctual_irradiance(const Elements& e, const Surface& surface, 
           Rgb value = punctual_light_irradiance(lights[l], x, e.normal[i], &dir, &dist);
           if (dot(ng, dir) <= 0 || (options.cull_unlit && max_component(value) <= 0)) continue;
           Vec3 origin = x + ng * e.offset[i];
-          sum += options.shadow_rays
-                     ? value * tracer.transmittance(origin, dir, 0.0f, std::isfinite(dist) ? dist * (1 - 1e-5f) : INFINITY)
-                     : value;
+          const Rgb arriving =
+              options.shadow_rays
+                  ? value * tracer.transmittance(origin, dir, 0.0f, std::isfinite(dist) ? dist * (1 - 1e-5f) : INFINITY)
+                  : value;
+          sum += arriving;
+          from.add(arriving / float(rays), dir);
         }
         total += sum / float(rays);
       }
       irradiance[i - range.begin] = total;
+      if (directions) (*directions)[i - range.begin] = from;
     }
     progress.advance(r.size());
   });

@@ -36,6 +36,7 @@ enum class Stream : uint64_t {
   SensorSky,
   SensorGather,
   View,
+  LightProbe,
 };
 
 // A counter-based generator for one (seed, stream, key) triple.

@@ -75,6 +75,8 @@ struct Material {
   Rgb emissive{0, 0, 0};  // linear emissiveFactor
   float emissive_strength = 1;  // KHR_materials_emissive_strength
   TextureRef emissive_texture;
+  TextureRef normal_texture;  // tangent-space normals (glTF: +X along u, +Y against v, +Z out)
+  float normal_scale = 1;     // normalTexture.scale: multiplies the map's X and Y
   bool double_sided = false;
   // Features of the source material that diffuse radiosity leaves out (transmission, specular,
   // volume...), named for the user by io/; the plan warns about them.

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "baker/elements.h"
+#include "baker/light_direction.h"
 #include "baker/progress.h"
 #include "baker/ray_tracer.h"
 #include "baker/sampling.h"
@@ -81,8 +82,10 @@ double sun_disc_seen(const SkyView& view, const RayTracer& tracer, Vec3 origin, 
 std::vector<double> sky_illuminance_at(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
                                        const RayTracer& tracer, const SkyLight& sky, uint64_t seed);
 
-// Per element of `range` (the first at index 0), lux (grey: the sky is white).
+// Per element of `range` (the first at index 0), lux (grey: the sky is white); with `directions`,
+// where it comes from (light_direction.h).
 std::vector<Rgb> sky_irradiance(const Elements& elements, const Surface& surface, const RayTracer& tracer,
-                                const SkyLight& sky, uint64_t seed, Progress& progress, ElementRange range = {});
+                                const SkyLight& sky, uint64_t seed, Progress& progress, ElementRange range = {},
+                                std::vector<LightDirection>* directions = nullptr);
 
 }  // namespace radbake

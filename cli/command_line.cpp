@@ -204,6 +204,14 @@ bake options:
   --simulate-everything   skip nothing the effect plan would skip (one colour channel, no
                           shadow rays in a convex room, culled lights...): the reference the
                           planned bake is checked against
+  --directional MODE      none | sh: also pages of L1 spherical harmonics of the irradiance
+                          (NAME_sh_c0/c1x/c1y/c1z_N.exr and packed .png), so normal maps show
+                          under baked light | dominant: a page of the light's dominant direction
+                          (Unity's directional mode); see the glTF's extras.radbake.directional
+  --probes SPACING        auto | none | metres: L2 spherical-harmonic light probes on a grid in
+                          the scene's empty space (auto: 8 along its longest side), for objects
+                          that move through it: NAME_probes.json and extras.radbake.probes
+  --probe-rays N          sphere rays per probe for the light surfaces reflect (default 4096)
   --debug-dumps           also write OUTDIR/debug/*.exr: light by source, material, normals,
                           sample flags and patch layout, undilated
   --quiet                 no progress and no warnings on stderr
@@ -670,6 +678,17 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
        }},
       {"--sensors", [&](const std::string& v) { b.sensor_file = v; }},
       {"--weather", [&](const std::string& v) { b.weather_file = v; }},
+      {"--directional", [&](const std::string& v) {
+         if (v == "none") b.bake.directional = Directional::None;
+         else if (v == "sh") b.bake.directional = Directional::SphericalHarmonics;
+         else if (v == "dominant") b.bake.directional = Directional::Dominant;
+         else throw UsageError("option --directional must be none, sh or dominant" + got(v));
+       }},
+      {"--probes", [&](const std::string& v) {
+         b.bake.probes.enabled = v != "none";
+         b.bake.probes.spacing = v == "auto" || v == "none" ? 0.0f : float(parse_number("--probes", v, 1e-3, 1e6));
+       }},
+      {"--probe-rays", [&](const std::string& v) { b.bake.probes.rays = uint32_t(parse_integer("--probe-rays", v, 16, 1 << 20)); }},
       {"--checkpoint", [&](const std::string& v) { b.checkpoint = v; }},
       {"--checkpoint-every", [&](const std::string& v) {
          b.bake.sharing.solve_save_seconds = parse_number("--checkpoint-every", v, 0, 1e7);
@@ -789,6 +808,9 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
   if (!b.output.empty() && (sliced || stops))
     throw UsageError("a slice or a stopped bake writes only its checkpoint: leave out -o (radbake merge writes the output)");
   if (b.merge) b.bake.sharing.resume = true;
+  if (b.bake.directional != Directional::None &&
+      (b.bake.store != StoredQuantity::Irradiance || b.bake.method != Method::Radiosity))
+    throw UsageError("directional lightmaps are of the radiosity bake's irradiance: --method radiosity, --store irradiance");
   if (b.bake.plan.direct_only && b.bake.plan.simulate_everything)
     throw UsageError("--direct-only and --simulate-everything contradict each other");
   if (!b.weather_file.empty()) {
@@ -860,6 +882,10 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
       {"ambient", b.bake.solve.ambient_term ? "yes" : "no"},
       {"direct-only", b.bake.plan.direct_only ? "yes" : "no"},
       {"near-field", b.bake.near_field ? "yes" : "no"},
+      {"probes", !b.bake.probes.enabled ? "none" : b.bake.probes.spacing > 0 ? number(b.bake.probes.spacing) : "auto"},
+      {"probe-rays", number(b.bake.probes.rays)},
+      {"directional", b.bake.directional == Directional::None ? "none"
+                      : b.bake.directional == Directional::Dominant ? "dominant" : "sh"},
       {"simulate-everything", b.bake.plan.simulate_everything ? "yes" : "no"},
       {"rotate-charts", b.atlas.rotate_charts ? "yes" : "no"},
       {"fit-page", b.atlas.fit_one_page ? "yes" : "no"},

@@ -26,6 +26,7 @@
 #include "io/debug_dumps.h"
 #include "io/display_gltf.h"
 #include "io/gltf.h"
+#include "io/light_probe_outputs.h"
 #include "io/lightmap_images.h"
 #include "io/output_folder.h"
 #include "io/report.h"
@@ -84,8 +85,14 @@ radbake::DisplaySummary write_display(const radbake::BakeCommand& cmd, const rad
   prelit.detail = cmd.display == DisplayMode::Page ? cmd.display_detail : 1;
   prelit.emission_scale = cmd.bake.emission_scale;
   prelit.lightmap_is_irradiance = cmd.bake.store == StoredQuantity::Irradiance;
-  const PrelitPages pages = prelit_pages(scene, surface, result.pages, prelit);
+  PrelitPages pages = prelit_pages(scene, surface, result.pages, prelit);
+  // Metered on the flat pages: showing the normal maps' bumps (--directional sh) changes where the
+  // light falls, not how much there is, and must not change the exposure.
   const Exposure exposure = choose_exposure(pages.pages, cmd.exposure);
+  if (cmd.bake.directional == Directional::SphericalHarmonics) {
+    prelit.sh = &result.directional;
+    pages = prelit_pages(scene, surface, result.pages, prelit);
+  }
   DisplaySummary summary;
   summary.exposure = exposure.exposure;
   summary.exposure_automatic = exposure.automatic;
@@ -322,6 +329,12 @@ int run_bake(const radbake::BakeCommand& cmd, radbake::Team& team) {
   stop_if_interrupted();
   EngineFileOptions engine;
   engine.color_0 = cmd.color_0;
+  engine.directional = write_directional(cmd.bake.directional, result.directional, folder.path(), name);
+  if (cmd.bake.probes.enabled) {
+    engine.probes = &result.probes;
+    engine.probes_file = write_light_probes(result.probes, folder.path(), name);
+  }
+  stop_if_interrupted();
   run.display = write_display(cmd, loaded.scene, atlas, result, folder.path(), name);
   engine.display_exposure = run.display.exposure;
   engine.display_file = run.display.file;

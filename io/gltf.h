@@ -9,6 +9,8 @@
 
 #include "baker/math.h"
 #include "baker/scene.h"
+#include "baker/light_probes.h"
+#include "io/directional_outputs.h"
 #include "uv/atlas.h"
 
 namespace radbake {
@@ -76,6 +78,9 @@ struct EngineFileOptions {
   Color0 color_0 = Color0::Source;
   float display_exposure = 0;   // display units per cd/m2, recorded for viewers and the three.js plugin
   std::string display_file;     // the display file beside it, recorded in extras; empty: none
+  DirectionalFiles directional; // --directional's pages, recorded in extras.radbake.directional
+  const LightProbes* probes = nullptr;  // --probes: recorded in extras.radbake.probes, with their file
+  std::string probes_file;
 };
 
 // Writes NAME.gltf (+ buffers and copies of the input's images) into `folder`: the input with, for

@@ -516,6 +516,8 @@ class SceneBuilder {
       if (in.emissiveFactor.size() == 3)
         m.emissive = {float(in.emissiveFactor[0]), float(in.emissiveFactor[1]), float(in.emissiveFactor[2])};
       m.emissive_texture = texture_ref(in.emissiveTexture.index, in.emissiveTexture.texCoord, in.emissiveTexture.extensions);
+      m.normal_texture = texture_ref(in.normalTexture.index, in.normalTexture.texCoord, in.normalTexture.extensions);
+      m.normal_scale = std::isfinite(in.normalTexture.scale) ? float(std::clamp(in.normalTexture.scale, -100.0, 100.0)) : 1.0f;
       auto strength = in.extensions.find("KHR_materials_emissive_strength");
       if (strength != in.extensions.end()) m.emissive_strength = float(number(strength->second, "emissiveStrength", 1.0));
       m.double_sided = in.doubleSided;

@@ -14,6 +14,7 @@
 #include "io/gltf_binary.h"
 #include "io/gltf_prune.h"
 #include "io/gltf_source.h"
+#include "io/light_probe_outputs.h"
 
 namespace radbake {
 namespace {
@@ -421,10 +422,37 @@ class Writer {
                         "reflectance r under E lux has luminance r * E / pi";
     }
     if (!options_.display_file.empty()) info["display_file"] = options_.display_file;
+    if (!options_.directional.mode.empty()) info["directional"] = directional_info();
+    if (options_.probes) {
+      info["probes"] = light_probes_json(*options_.probes);
+      info["probes"]["file"] = options_.probes_file;
+    }
     json& extras = doc_["extras"];
     if (extras.is_null()) extras = json::object();
     if (extras.is_object()) extras["radbake"] = info;
     else doc_["asset"]["extras"]["radbake"] = info;
+  }
+
+  // --directional: the pages, how the PNGs decode and how the coefficients make light.
+  json directional_info() const {
+    const DirectionalFiles& d = options_.directional;
+    json sets = json::array();
+    for (const DirectionalSet& set : d.sets)
+      sets.push_back({{"coefficient", set.coefficient}, {"exr", set.exr}, {"png", set.png}, {"png_scale", set.scale},
+                      {"png_offset", set.offset}});
+    json info = {{"mode", d.mode}, {"pages", sets},
+                 {"png", "8-bit linear (no sRGB curve); value = png_offset + png_scale * png / 255"},
+                 {"exr", "linear float RGB, the values themselves"},
+                 {"space", "world space of the glTF (+Y up), the texel of a page is the lightmap's (TEXCOORD_1)"}};
+    if (d.mode == "sh")
+      info["irradiance"] = "lux for a surface of unit normal n: max(0, c0 + c1x n.x + c1y n.y + c1z n.z) per channel; "
+                           "at the surface's own normal the lightmap's irradiance; L1 spherical harmonics of the "
+                           "irradiance, c0 = 0.282095 E00, (c1x, c1y, c1z) = 0.488603 (E11, E1-1, E10)";
+    else
+      info["irradiance"] = "Unity's directional lightmaps: the lightmap's irradiance E times (n . dir + 0.5) / "
+                           "max(1e-4, |dir|), dir the stored luminance-weighted mean direction of the arriving "
+                           "light (its length is how directional the light is)";
+    return info;
   }
 
   const GltfSource& src_;

@@ -140,6 +140,8 @@ void write_report(const std::string& path, const RunInfo& run, const Scene& scen
       {"subdivision", subdivision},
       {"seconds", stages},
       {"distribution", distribution},
+      {"light_probes", bake.light_probes == 0 ? json(nullptr)
+                                              : json{{"count", bake.light_probes}, {"spacing_m", bake.light_probe_spacing}}},
       {"total_seconds", run.total_seconds},
       {"peak_memory_bytes", run.peak_memory_bytes},
       {"solver", {{"iterations", bake.solver_iterations}, {"channels", bake.solved_channels},

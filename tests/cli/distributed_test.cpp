@@ -91,6 +91,18 @@ TEST(Distributed, OneToFourRanksWriteWhatOneProcessWrites) {
   for (const auto& stage : report(alone())["distribution"]["stages"]) EXPECT_EQ(stage["bytes_exchanged"], 0);
 }
 
+TEST(Distributed, DirectionalPagesAndProbesAreTheSameOnTwoRanks) {
+  // The light's directions travel with the direct light and the gather; the probes are the first's.
+  const std::string dir = test::fresh_folder("distributed_directional");
+  const std::string options = kOptions + " --directional sh --probes 0.2";
+  Outcome one = radbake("bake " + kCornell + " -o " + dir + "/one" + options);
+  ASSERT_EQ(one.status, 0) << one.err;
+  Outcome two = test::run(mpirun(2) + "bake " + kCornell + " -o " + dir + "/two" + options);
+  ASSERT_EQ(two.status, 0) << two.err;
+  expect_same_output(dir + "/one", dir + "/two");
+  EXPECT_TRUE(fs::exists(dir + "/two/cornell_box_sh_c1z_0.exr"));
+}
+
 TEST(Distributed, AStoppedTeamResumesOnAnotherNumberOfRanks) {
   const std::string dir = test::fresh_folder("distributed_resume_ranks");
   Outcome stop = test::run(mpirun(2) + "bake " + kCornell + kOptions + " --checkpoint " + dir + "/ckpt --stop-after form-factors");

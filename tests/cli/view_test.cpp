@@ -2,6 +2,8 @@
 // folders' files and nothing else, on 127.0.0.1 only, and the page in headless Chromium reads the
 // bake's EXR where it is clicked.
 #include <gtest/gtest.h>
+
+#include <algorithm>
 #include <httplib.h>
 #include <signal.h>
 #include <spawn.h>
@@ -299,6 +301,35 @@ TEST(View, ComparingABakeWithAFivePercentBrighterLampShowsTheDifference) {
   for (size_t k = 0; k < kWalls.size(); ++k) {
     const nlohmann::json &left = result["steps"][1]["pixels"][k]["rgb"], &right = result["steps"][2]["pixels"][k]["rgb"];
     EXPECT_GT(int(right[0]) + int(right[1]) + int(right[2]), int(left[0]) + int(left[1]) + int(left[2])) << k;
+  }
+}
+
+TEST(View, LightProbesAreDrawnAsSpheresLitByTheirOwnLight) {
+  const std::string folder = cornell_bake("view_probes", "--probes 0.15");
+  const nlohmann::json probes = nlohmann::json::parse(test::slurp(folder + "/cornell_box_probes.json"));
+  ASSERT_GT(probes["count"].get<int>(), 4);
+  ViewServer server({folder});
+  ASSERT_GT(server.port(), 0);
+  // The three nearest the camera (it looks along +Z from z = -0.8), so no block hides them.
+  std::vector<size_t> nearest(probes["probes"].size());
+  for (size_t k = 0; k < nearest.size(); ++k) nearest[k] = k;
+  std::sort(nearest.begin(), nearest.end(), [&](size_t a, size_t b) {
+    return probes["probes"][a]["position"][2].get<double>() < probes["probes"][b]["position"][2].get<double>();
+  });
+  nearest.resize(3);
+  const nlohmann::json result = drive_page(server, nlohmann::json::array({{{"mode", "baked"}, {"probes", nearest}}}));
+  ASSERT_FALSE(result.is_null());
+  const nlohmann::json& step = result["steps"][0];
+  EXPECT_EQ(step["probeCount"], probes["count"]);
+  ASSERT_EQ(step["probes"].size(), 3u);
+  for (size_t k = 0; k < 3; ++k) {
+    // Each sphere stands where its probe is, and showing it changes the pixel there.
+    const nlohmann::json& p = step["probes"][k];
+    for (size_t a = 0; a < 3; ++a)
+      EXPECT_NEAR(p["position"][a].get<double>(), probes["probes"][nearest[k]]["position"][a].get<double>(), 1e-4);
+    EXPECT_NE(p["shown"], p["hidden"]) << p.dump();
+    // Lit, not black: a white sphere under the room's light.
+    EXPECT_GT(p["shown"][0].get<int>() + p["shown"][1].get<int>() + p["shown"][2].get<int>(), 60) << p.dump();
   }
 }
 

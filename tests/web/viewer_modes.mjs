@@ -2,9 +2,11 @@
 // view-screenshots: opens URL at WIDTH x HEIGHT through the glTF's first camera, then runs the
 // steps of a JSON list, each { mode, scale?, max?, compare?, split?, ev?, walk?, hold?: KEY (held
 // for half a second), pixels: [[x, y], ...], sensors: [k, ...] (where sensor k is drawn, its
-// reading and the pixel there), screenshot?: FILE, button?: true (the page's own
+// reading and the pixel there), probes: [k, ...] (light probe k's sphere: where it is drawn, the
+// pixel there with the probes hidden and shown), screenshot?: FILE, button?: true (the page's own
 // screenshot button: the download's size) }, and prints one JSON line: { consoleErrors,
-// loadSeconds, steps: [{ scale, camera, download, pixels: [{ x, y, rgb, pick }] }] }.
+// loadSeconds, steps: [{ scale, camera, download, pixels: [{ x, y, rgb, pick }], probeCount,
+// probes: [{ x, y, position, hidden, shown }] }] }.
 //   node viewer_modes.mjs URL WIDTH HEIGHT 'STEPS'
 import { readFile } from 'node:fs/promises';
 import path from 'node:path';
@@ -47,6 +49,20 @@ try {
       const rgb = await page.evaluate(([px, py]) => window.radbakeView.pixel(px, py), [Math.floor(s.x), Math.floor(s.y)]);
       sensors.push({ ...s, rgb });
     }
+    const probes = [];
+    let probeCount = null;
+    if (step.probes) {
+      probeCount = await page.evaluate(() => window.radbakeView.showProbes(false));
+      for (const k of step.probes) {
+        const p = await page.evaluate((i) => window.radbakeView.probe(i), k);
+        const at = [Math.floor(p.x), Math.floor(p.y)];
+        const hidden = await page.evaluate(([px, py]) => window.radbakeView.pixel(px, py), at);
+        await page.evaluate(() => window.radbakeView.showProbes(true));
+        const shown = await page.evaluate(([px, py]) => window.radbakeView.pixel(px, py), at);
+        await page.evaluate(() => window.radbakeView.showProbes(false));
+        probes.push({ ...p, hidden, shown });
+      }
+    }
     const pixels = [];
     for (const [x, y] of step.pixels || []) {
       const rgb = await page.evaluate(([px, py]) => window.radbakeView.pixel(px, py), [x, y]);
@@ -54,7 +70,7 @@ try {
       pixels.push({ x, y, rgb, pick });
     }
     if (step.screenshot) await page.screenshot({ path: step.screenshot });
-    steps.push({ scale, camera, download, pixels, sensors });
+    steps.push({ scale, camera, download, pixels, sensors, probeCount, probes });
   }
   const loadSeconds = await page.evaluate(() => window.radbakeView.loadSeconds());
   console.log(JSON.stringify({ consoleErrors, loadSeconds, steps }));

@@ -37,7 +37,44 @@ async function loadBake(bake, exposure) {
   gltf.scene.traverse((o) => {
     if (o.isMesh) meshes.push({ mesh: o, baked: o.material, page: pageOf(gltf, json, o.material) });
   });
-  return { bake, gltf, json, record, pages, scene, meshes, sensors: await loadSensors(bake, scene) };
+  return { bake, gltf, json, record, pages, scene, meshes, sensors: await loadSensors(bake, scene), probes: probeSpheres(record, scene) };
+}
+
+// The bake's light probes (extras.radbake.probes, --probes) as white spheres lit by each probe:
+// a Lambertian sphere of reflectance 1 shows E(n) / pi cd/m2 (E from the probe's L2 coefficients,
+// Ramamoorthi and Hanrahan), at the display exposure; null when the bake has none.
+function probeSpheres(record, scene) {
+  const probes = record.probes && Array.isArray(record.probes.probes) ? record.probes.probes : [];
+  if (!probes.length) return null;
+  const geometry = new THREE.SphereGeometry(Math.max(1e-3, 0.15 * (record.probes.spacing_m || 0.1)), 24, 16);
+  const group = new THREE.Group();
+  group.name = 'radbake light probes';
+  for (const probe of probes) {
+    const material = new THREE.ShaderMaterial({
+      uniforms: { sh: { value: probe.sh.map((c) => new THREE.Vector3(c[0], c[1], c[2])) },
+        exposure: { value: record.display_exposure || 1 } },
+      vertexShader: `varying vec3 vNormal;
+void main() { vNormal = normalize(mat3(modelMatrix) * normal); gl_Position = projectionMatrix * modelViewMatrix * vec4(position, 1.0); }`,
+      fragmentShader: `uniform vec3 sh[9]; uniform float exposure; varying vec3 vNormal;
+void main() {
+  vec3 n = normalize(vNormal);
+  float pi = 3.14159265;
+  vec3 e = pi * 0.282095 * sh[0]
+    + (2.0 * pi / 3.0) * 0.488603 * (sh[1] * n.y + sh[2] * n.z + sh[3] * n.x)
+    + (pi / 4.0) * (1.092548 * (sh[4] * n.x * n.y + sh[5] * n.y * n.z + sh[7] * n.x * n.z)
+                    + 0.315392 * sh[6] * (3.0 * n.z * n.z - 1.0) + 0.546274 * sh[8] * (n.x * n.x - n.y * n.y));
+  gl_FragColor = vec4(max(e, vec3(0.0)) / pi * exposure, 1.0);
+  #include <tonemapping_fragment>
+  #include <colorspace_fragment>
+}`,
+    });
+    const sphere = new THREE.Mesh(geometry, material);
+    sphere.position.fromArray(probe.position);
+    group.add(sphere);
+  }
+  group.visible = false;
+  scene.add(group);
+  return group;
 }
 
 // The bake's sensors (sensors.csv: work plane and listed points), as points drawn over the scene
@@ -365,6 +402,10 @@ async function start() {
   for (const id of ['mode', 'scale', 'max', 'ev']) $(id).addEventListener('input', () => { state.mode = modes.value; applyMode(); });
   $('split').addEventListener('input', () => { state.split = Number($('split').value); });
   $('walk').addEventListener('change', () => { state.walk = $('walk').checked; controls.enabled = !state.walk; });
+  if (state.a.probes) {
+    $('probes-row').style.display = 'block';
+    $('probes').addEventListener('change', () => { state.a.probes.visible = $('probes').checked; });
+  }
   $('screenshot').addEventListener('click', () => {
     const link = document.createElement('a');
     link.download = 'radbake_view.png';
@@ -411,6 +452,18 @@ window.radbakeView = {
   },
   pick,
   cameraPosition: () => camera.position.toArray(),
+  // The light probes: shown or hidden; how many; where probe k is drawn (CSS pixels) and its position.
+  showProbes: (on) => {
+    $('probes').checked = on;
+    if (state.a.probes) state.a.probes.visible = on;
+    render();
+    return state.a.probes ? state.a.probes.children.length : 0;
+  },
+  probe: (k) => {
+    const sphere = state.a.probes.children[k];
+    const p = sphere.position.clone().project(camera);
+    return { x: (p.x + 1) / 2 * canvas.clientWidth, y: (1 - p.y) / 2 * canvas.clientHeight, position: sphere.position.toArray() };
+  },
   // Where sensor k is drawn, in CSS pixels (x right, y down), and its reading.
   sensor: (k) => {
     const p = new THREE.Vector3().fromBufferAttribute(state.a.sensors.points.geometry.attributes.position, k).project(camera);
