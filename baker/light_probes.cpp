@@ -82,7 +82,8 @@ LightProbes place_probes(const Surface& surface, const RayTracer& tracer, const 
   int count[3];
   auto fill = [&] {
     size_t total = 1;
-    for (int a = 0; a < 3; ++a) total *= size_t(count[a] = std::max(1, int(std::floor(extent[a] / spacing))));
+    for (int a = 0; a < 3; ++a)
+      total *= size_t(count[a] = int(std::clamp(std::floor(double(extent[a]) / spacing), 1.0, 1e6)));
     return total;
   };
   while (fill() > std::max<size_t>(1, options.max_probes)) spacing *= 1.1f;
