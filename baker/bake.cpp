@@ -50,12 +50,6 @@ std::vector<Rgb> radiosity_of(const Elements& elements, const std::vector<Rgb>& 
   return radiosity;
 }
 
-uint64_t peak_resident_bytes() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return uint64_t(usage.ru_maxrss) * 1024;
-}
-
 std::string percent(double fraction) {
   char text[32];
   std::snprintf(text, sizeof text, "%.3g%%", 100 * fraction);
@@ -73,6 +67,17 @@ PlanDecision solve_outcome(const RadiositySolution& s, const SolveOptions& optio
           unshot + ", above the tolerance of " + percent(options.tolerance)};
 }
 
+// The chunks a texel stage is shared in: about 256, of 1,024 texels or more, whole blocks of 256
+// (the gather's), none across a page when `by_page`.
+std::vector<size_t> texel_chunk_starts(const Elements& elements, bool by_page) {
+  const size_t n = elements.size();
+  std::vector<size_t> page_starts;
+  if (by_page)
+    for (size_t i = 1; i < n; ++i)
+      if (elements.page[i] != elements.page[i - 1]) page_starts.push_back(i);
+  return chunk_starts(n, n / 256, 1024, 256, page_starts);
+}
+
 // Direct light from lights, the sky and emitting surfaces, in chunks of texels shared by the team;
 // every process gets all of it (the form factors and the gather read it anywhere). Also the lm,
 // mean of RGB, that punctual lights and the sky land on valid elements (where light passes
@@ -86,7 +91,7 @@ std::vector<Rgb> shared_direct_light(const Scene& scene, const Elements& element
   direct.cull_unlit = !plan.exhaustive;
   direct.light_traced = plan.light_traced;
   const size_t n = elements.size();
-  const std::vector<size_t> starts = chunk_starts(n, n / 256, 1024, 256, {});
+  const std::vector<size_t> starts = texel_chunk_starts(elements, false);
   std::vector<Rgb> irradiance(n);
   const bool directional = options.directional != Directional::None;
   if (directional) directions.assign(n, {});
@@ -191,17 +196,15 @@ std::optional<GatheredLight> shared_gather(const Elements& elements, const Patch
   const GatherInputs inputs =
       gather_inputs(elements, patches, surface, ByteReader(indirect.bytes()).get_vector<Rgb>());
   const size_t n = elements.size();
-  std::vector<size_t> page_starts;
-  for (size_t i = 1; i < n; ++i)
-    if (elements.page[i] != elements.page[i - 1]) page_starts.push_back(i);
-  const std::vector<size_t> starts = chunk_starts(n, n / 256, 1024, 256, page_starts);
+  const bool directional = options.directional != Directional::None;
+  const std::vector<size_t> starts = texel_chunk_starts(elements, true);
   const size_t chunks = starts.size() - 1;
   GatherTrace whole;
   std::vector<std::vector<NearLanding>> landings(chunks);
   if (team.first()) {
     whole.irradiance.resize(n);
     whole.harmonic_distance.assign(n, INFINITY);
-    if (options.directional != Directional::None) whole.mean_direction.resize(n);
+    if (directional) whole.mean_direction.resize(n);
   }
   SharedStage stage;
   stage.name = "final gather";
@@ -209,8 +212,7 @@ std::optional<GatheredLight> shared_gather(const Elements& elements, const Patch
   stage.compute = [&](size_t chunk) {
     const GatherTrace t = trace_gather(elements, patches, surface, tracer, inputs, patch_exitance, direct,
                                        options.gather_rays, options.near_field, options.seed,
-                                       ElementRange{starts[chunk], starts[chunk + 1]},
-                                       options.directional != Directional::None);
+                                       ElementRange{starts[chunk], starts[chunk + 1]}, directional);
     ByteWriter out;
     out.put_vector(t.irradiance);
     out.put_vector(t.harmonic_distance);
@@ -228,7 +230,7 @@ std::optional<GatheredLight> shared_gather(const Elements& elements, const Patch
     landings[chunk] = in.get_vector<NearLanding>();
     const size_t count = starts[chunk + 1] - starts[chunk];
     if (irradiance.size() != count || distance.size() != count ||
-        mean_direction.size() != (options.directional != Directional::None ? count : 0))
+        mean_direction.size() != (directional ? count : 0))
       throw TruncatedBytes();
     if (!mean_direction.empty())
       std::copy(mean_direction.begin(), mean_direction.end(), whole.mean_direction.begin() + std::ptrdiff_t(starts[chunk]));
@@ -365,6 +367,12 @@ void compute_radiosity(const Scene& scene, const Elements& elements, const Surfa
 }
 
 }  // namespace
+
+uint64_t peak_resident_bytes() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return uint64_t(usage.ru_maxrss) * 1024;
+}
 
 BakeGeometry bake_geometry(const Scene& scene, const Atlas& atlas, const BakeOptions& options, const EffectPlan& plan,
                            Progress& progress, std::vector<StageTime>& times) {

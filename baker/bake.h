@@ -145,6 +145,9 @@ struct BakeGeometry {
   Elements elements;
 };
 
+// This process's peak resident set so far, bytes (what the report and each rank's share state).
+uint64_t peak_resident_bytes();
+
 // Throws InputError when no texel covers a visible surface. Stage times go to `times`.
 BakeGeometry bake_geometry(const Scene& scene, const Atlas& atlas, const BakeOptions& options, const EffectPlan& plan,
                            Progress& progress, std::vector<StageTime>& times);

@@ -22,7 +22,9 @@ void add(ShL2& sh, const Rgb& value, Vec3 d) {
   for (size_t k = 0; k < 9; ++k) sh[k] += value * y[k];
 }
 
-// The emitting triangles, picked in proportion to area times their brightest emission.
+// The emitting triangles, picked in proportion to area times their brightest emission. The path
+// tracer keeps a table like it of its own: it is the reference probes are tested against, and
+// shares nothing with the baker but the scene, the ray tracer and the lights (DESIGN.md).
 struct EmitterTable {
   std::vector<uint32_t> triangle;
   std::vector<double> cumulative;  // of the weights

@@ -1,6 +1,5 @@
 // radbake: a thin shell over the pipeline in DESIGN.md. Parse, load, unwrap, bake, write; or
 // compare two bakes (cli/diff_command).
-#include <sys/resource.h>
 
 #include <chrono>
 #include <cstdio>
@@ -33,11 +32,6 @@
 
 namespace {
 
-size_t peak_memory_bytes() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return size_t(usage.ru_maxrss) * 1024;
-}
 
 // One line whatever the message quotes: each quoted piece of user text should be clipped where the
 // message is made, and this bounds the line when one was not.
@@ -191,7 +185,7 @@ int run_annual(const radbake::BakeCommand& cmd) {
   run.metric_options = &cmd.metrics, run.occupied_from = cmd.occupied_from, run.occupied_to = cmd.occupied_to;
   run.glare = &glare, run.eyes = &options.views;
   run.total_seconds = seconds_since(start);
-  run.peak_memory_bytes = peak_memory_bytes();
+  run.peak_memory_bytes = radbake::peak_resident_bytes();
   stop_if_interrupted();
   write_annual(run, folder.path());
   folder.commit();
@@ -348,7 +342,7 @@ int run_bake(const radbake::BakeCommand& cmd, radbake::Team& team) {
   warnings.insert(warnings.end(), result.report.warnings.begin(), result.report.warnings.end());
   warnings.insert(warnings.end(), gltf.warnings.begin(), gltf.warnings.end());
   run.total_seconds = seconds_since(start);
-  run.peak_memory_bytes = peak_memory_bytes();
+  run.peak_memory_bytes = radbake::peak_resident_bytes();
   run.files = folder.files();
   run.files.push_back("report.json");  // the list is in it
   write_report((std::filesystem::path(folder.path()) / "report.json").string(), run, loaded.scene, atlas,
