@@ -21,16 +21,16 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "baker/back_faces.h"
-#include "baker/bake.h"
-#include "baker/direct_light.h"
-#include "baker/lightmap_difference.h"
-#include "baker/material_sampler.h"
-#include "baker/ray_tracer.h"
-#include "baker/sampling.h"
-#include "baker/surface.h"
+#include "baker/direct/direct_light.h"
+#include "baker/finish/lightmap_difference.h"
+#include "baker/pipeline/bake.h"
+#include "baker/surface/back_faces.h"
+#include "baker/surface/material_sampler.h"
+#include "baker/surface/ray_tracer.h"
+#include "baker/surface/sampling.h"
+#include "baker/surface/surface.h"
 #include "cli/command_line.h"
-#include "io/gltf.h"
+#include "io/gltf/gltf_loader.h"
 #include "support/cornell_regions.h"
 #include "support/scene_builders.h"
 

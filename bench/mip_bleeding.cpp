@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "io/gltf.h"
+#include "io/gltf/gltf_loader.h"
 #include "support/mip_bleeding.h"
 
 int main(int argc, char** argv) {

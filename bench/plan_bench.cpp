@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "baker/bake.h"
+#include "baker/pipeline/bake.h"
 #include "support/scene_builders.h"
 
 namespace radbake {
@@ -107,7 +107,7 @@ int run(int argc, char** argv) {
   if (!markdown.empty()) {
     std::ofstream out(markdown);
     out << "# What the effect plan saves\n\n"
-           "Made by `./dev bench` (`build/plan_bench --markdown docs/bench_plan.md`): each scene baked as\n"
+           "Made by `./dev bench` (`build/plan_bench --markdown docs/bench/plan.md`): each scene baked as\n"
            "planned and with that one skip undone, at "
         << density
         << " texels per metre, default bake options. Times are the best of three runs on this machine\n"

@@ -1,4 +1,4 @@
-// How well vertex light follows the lightmap as the mesh is refined (baker/vertex_refinement.h):
+// How well vertex light follows the lightmap as the mesh is refined (baker/finish/vertex_refinement.h):
 // a scene is baked once, then refined at a range of triangle budgets; the table shows the
 // triangles made, the relative RMS difference between vertex-interpolated light and the
 // lightmap, and the time refinement took (best of three).
@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
-#include "baker/back_faces.h"
-#include "baker/vertex_refinement.h"
-#include "io/gltf.h"
+#include "baker/finish/vertex_refinement.h"
+#include "baker/surface/back_faces.h"
+#include "io/gltf/gltf_loader.h"
 #include "support/scene_builders.h"
 
 int main(int argc, char** argv) {

@@ -1,40 +1,41 @@
-// Parses `radbake bake ...` into the options structs; every option has a default and a unit.
+// Parses the radbake commands into their options structs, by the option tables of
+// cli/command_line.cpp: every option has a default and a unit, and report.json echoes it.
 #pragma once
 
-#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
-#include "baker/annual_metrics.h"
-#include "baker/bake.h"
-#include "baker/daylight.h"
-#include "baker/exposure.h"
-#include "baker/lightmap_difference.h"
+#include "baker/finish/display.h"
+#include "baker/finish/lightmap_difference.h"
+#include "baker/pipeline/bake_options.h"
+#include "cli/option_table.h"
 #include "cli/view_command.h"
-#include "io/analysis_outputs.h"
-#include "io/gltf.h"
+#include "daylight/annual_metrics.h"
+#include "daylight/daylight_sky.h"
+#include "io/analysis/analysis_outputs.h"
+#include "io/gltf/gltf_loader.h"
+#include "io/gltf/gltf_writer.h"
 #include "uv/atlas.h"
 
 namespace radbake {
 
-struct UsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
-// What the display file (NAME_display.glb) shows its light with.
-enum class DisplayMode {
-  Page,    // pre-lit pages on the lightmap UVs
-  Vertex,  // the surface's base colour times pre-lit COLOR_0
-  None,    // no display file
+// The site and moment as typed; finish_site() makes DaylightOptions::site of them once every
+// option is read (the four that place the sun come as a set).
+struct SiteInput {
+  bool latitude = false, longitude = false, date = false, time = false, utc_offset = false;
+  SiteAndTime site;
+  bool given() const { return latitude || longitude || date || time || utc_offset; }
 };
 
 struct BakeCommand {
   std::string input, output;
   LoadOptions load;
   AtlasOptions atlas;
+  std::string quality = "preview";  // the preset the bake options start from
   BakeOptions bake;
   DaylightOptions daylight;  // made into bake.sky by daylight_sky() when the bake starts
+  SiteInput site_input;
   std::string sensor_file;   // CSV of points to measure at; empty: none
   bool daylight_factor = false;
   AnalysisOptions analysis;
@@ -44,17 +45,16 @@ struct BakeCommand {
   int sky_subdivision = 1;                  // 1: Tregenza's 145 sky patches; m: Reinhart's MF:m
   AnnualMetricsOptions metrics;
   float png_scale = 0;  // 0: automatic
-  DisplayMode display = DisplayMode::Page;
-  int display_detail = 0;      // pre-lit texels per lightmap texel along a side (1, 2, 4); 0: automatic
-  ExposureOptions exposure;    // display units per cd/m2; automatic by default
+  DisplayOptions display;
   Color0 color_0 = Color0::Source;
-  size_t vertex_refine_triangles = 0;  // --display vertex: refine the mesh up to this many triangles; 0: as it is
   bool quiet = false;
   bool debug_dumps = false;
   // Checkpoints and slices (docs/distributed.md); the team and the store are made in main.
   std::string checkpoint;   // --checkpoint DIR; empty: none
   bool merge = false;       // `radbake merge`: the final gather comes from the slices in the checkpoint
-  std::vector<std::pair<std::string, std::string>> effective;  // every option and its value, for the report
+  // Every option and the value in effect, for the report; and those that change what the bake
+  // computes, for the checkpoint's fingerprint.
+  std::vector<std::pair<std::string, std::string>> effective, result_options;
 };
 
 // `radbake uv`: the lightmap atlas alone, and what it is worth.
@@ -85,12 +85,17 @@ struct CommandLine {
   ViewCommand view;
 };
 
-// Throws UsageError naming the offending argument.
+// Throws UsageError naming the offending argument (InputError for options the baker's validate()
+// refuses together).
 CommandLine parse_command_line(const std::vector<std::string>& args);
 
-const char* usage_text();
+// The whole --help text, its options' lines made from the tables.
+std::string usage_text();
 
-// --quality NAME: sets the ray counts, tolerance and subdivision of a preset in `bake`.
-void apply_quality_preset(const std::string& name, BakeOptions& bake);
+// The option tables, for the help and for the tests that hold every row to its help and its echo.
+const OptionTable<BakeCommand>& bake_options();
+const OptionTable<UvCommand>& uv_options();
+const OptionTable<DiffCommand>& diff_options();
+const OptionTable<ViewCommand>& view_options();
 
 }  // namespace radbake

@@ -7,11 +7,11 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
-#include "baker/errors.h"
-#include "io/annual_comparison.h"
-#include "io/bake_lightmaps.h"
-#include "io/false_colour.h"
-#include "io/lightmap_images.h"
+#include "base/errors.h"
+#include "io/analysis/annual_comparison.h"
+#include "io/analysis/false_colour.h"
+#include "io/lightmaps/bake_lightmaps.h"
+#include "io/lightmaps/lightmap_images.h"
 
 namespace radbake {
 namespace {

@@ -8,8 +8,8 @@
 #include <mutex>
 #include <thread>
 
-#include "baker/errors.h"
-#include "io/output_folder.h"
+#include "base/errors.h"
+#include "io/run/output_folder.h"
 
 namespace radbake {
 namespace {

@@ -8,27 +8,29 @@
 #include <thread>
 #include <nlohmann/json.hpp>
 
-#include "baker/back_faces.h"
-#include "baker/bake.h"
-#include "baker/byte_stream.h"
-#include "baker/errors.h"
-#include "baker/surface.h"
+#include "baker/pipeline/bake.h"
+#include "baker/sharing/byte_stream.h"
+#include "baker/surface/back_faces.h"
+#include "baker/surface/surface.h"
+#include "base/errors.h"
+#include "base/version.h"
 #include "cli/command_line.h"
 #include "cli/diff_command.h"
 #include "cli/interrupts.h"
 #include "cli/process_team.h"
 #include "cli/progress_display.h"
-#include "io/analysis_outputs.h"
-#include "io/checkpoint_folder.h"
-#include "io/annual_outputs.h"
-#include "io/epw_reader.h"
-#include "io/debug_dumps.h"
-#include "io/display_gltf.h"
-#include "io/gltf.h"
-#include "io/light_probe_outputs.h"
-#include "io/lightmap_images.h"
-#include "io/output_folder.h"
-#include "io/report.h"
+#include "io/analysis/analysis_outputs.h"
+#include "io/analysis/annual_outputs.h"
+#include "io/analysis/epw_reader.h"
+#include "io/gltf/display_gltf.h"
+#include "io/gltf/gltf_loader.h"
+#include "io/gltf/gltf_writer.h"
+#include "io/lightmaps/debug_dumps.h"
+#include "io/lightmaps/light_probe_outputs.h"
+#include "io/lightmaps/lightmap_images.h"
+#include "io/run/checkpoint_folder.h"
+#include "io/run/output_folder.h"
+#include "io/run/report.h"
 
 namespace {
 
@@ -74,46 +76,34 @@ radbake::DisplaySummary write_display(const radbake::BakeCommand& cmd, const rad
                                       const radbake::Atlas& atlas, const radbake::BakeResult& result,
                                       const std::string& folder, const std::string& name) {
   using namespace radbake;
-  const Surface surface = build_surface(scene, atlas);
-  PrelitOptions prelit;
-  prelit.detail = cmd.display == DisplayMode::Page ? cmd.display_detail : 1;
-  prelit.emission_scale = cmd.bake.emission_scale;
-  prelit.lightmap_is_irradiance = cmd.bake.store == StoredQuantity::Irradiance;
-  PrelitPages pages = prelit_pages(scene, surface, result.pages, prelit);
-  // Metered on the flat pages: showing the normal maps' bumps (--directional sh) changes where the
-  // light falls, not how much there is, and must not change the exposure.
-  const Exposure exposure = choose_exposure(pages.pages, cmd.exposure);
-  if (cmd.bake.directional == Directional::SphericalHarmonics) {
-    prelit.sh = &result.directional;
-    pages = prelit_pages(scene, surface, result.pages, prelit);
-  }
+  const bool irradiance = cmd.bake.store == StoredQuantity::Irradiance;
+  const bool sh = cmd.bake.directional == Directional::SphericalHarmonics;
+  const DisplayLight light = display_light(scene, atlas, result.pages, result.vertex_values,
+                                           sh ? &result.directional : nullptr, cmd.bake.emission_scale, irradiance,
+                                           cmd.display);
   DisplaySummary summary;
-  summary.exposure = exposure.exposure;
-  summary.exposure_automatic = exposure.automatic;
-  summary.log_mean_luminance = exposure.log_mean_luminance;
-  if (cmd.display == DisplayMode::None) return summary;
-  // Refined only for vertex light (the pages carry the shadows otherwise); unrefined, the atlas's meshes.
-  RefinementOptions refinement;
-  if (cmd.display == DisplayMode::Vertex) refinement.max_triangles = cmd.vertex_refine_triangles;
-  const VertexRefinement refined = refine_vertex_light(scene, atlas, result.pages, result.vertex_values, refinement);
-  const std::vector<RefinedMesh>& meshes = refined.meshes;
-  if (cmd.display == DisplayMode::Vertex)
-    for (size_t k = 0; k < refined.curve.triangles.size(); ++k)
-      summary.refinement.push_back({refined.curve.triangles[k], refined.curve.rms_relative[k]});
+  summary.exposure = light.exposure.exposure;
+  summary.exposure_automatic = light.exposure.automatic;
+  summary.log_mean_luminance = light.exposure.log_mean_luminance;
+  if (cmd.display.mode == DisplayMode::None) return summary;
+  const bool vertex_lit = cmd.display.mode == DisplayMode::Vertex;
+  if (vertex_lit)
+    for (size_t k = 0; k < light.refined.curve.triangles.size(); ++k)
+      summary.refinement.push_back({light.refined.curve.triangles[k], light.refined.curve.rms_relative[k]});
   DisplayInput input;
   input.scene = &scene;
   input.atlas = &atlas;
-  input.pages = &pages;
-  input.meshes = &meshes;
-  input.vertex_lit = cmd.display == DisplayMode::Vertex;
-  input.lightmap_is_irradiance = prelit.lightmap_is_irradiance;
+  input.pages = &light.pages;
+  input.meshes = &light.refined.meshes;
+  input.vertex_lit = vertex_lit;
+  input.lightmap_is_irradiance = irradiance;
   input.emission_scale = cmd.bake.emission_scale;
-  input.exposure = exposure;
+  input.exposure = light.exposure;
   stop_if_interrupted();
   const DisplayOutput written = write_display_gltf(input, folder, name);
   summary.file = written.file;
-  summary.shows = input.vertex_lit ? "vertex light" : "pre-lit pages";
-  summary.prelit_detail = input.vertex_lit ? 0 : pages.detail;
+  summary.shows = vertex_lit ? "vertex light" : "pre-lit pages";
+  summary.prelit_detail = vertex_lit ? 0 : light.pages.detail;
   summary.triangles = written.triangles;
   return summary;
 }
@@ -256,7 +246,7 @@ int run_bake(const radbake::BakeCommand& cmd, radbake::Team& team) {
   // Only the first process checks and writes the checkpoint; the others hand it their results.
   std::unique_ptr<CheckpointFolder> checkpoint;
   if (!cmd.checkpoint.empty())
-    checkpoint = std::make_unique<CheckpointFolder>(cmd.checkpoint, bake_fingerprint(loaded, cmd.effective), cmd.input, first);
+    checkpoint = std::make_unique<CheckpointFolder>(cmd.checkpoint, bake_fingerprint(loaded, cmd.result_options), cmd.input, first);
   options.sharing.team = &team;
   options.sharing.store = checkpoint.get();
   if (cmd.merge) options.sharing.merge_slices = slice_count(*checkpoint, cmd.checkpoint);
@@ -449,8 +439,8 @@ int main(int argc, char** argv) {
   try {
     CommandLine cl = parse_command_line(std::vector<std::string>(argv + 1, argv + argc));
     switch (cl.action) {
-      case Action::Help: std::fputs(usage_text(), stdout); return 0;
-      case Action::Version: std::puts("radbake 0.1.0"); return 0;
+      case Action::Help: std::fputs(usage_text().c_str(), stdout); return 0;
+      case Action::Version: std::printf("radbake %s\n", kRadbakeVersion); return 0;
       case Action::Bake:
       case Action::Merge: return run_bake(cl.bake, team);
       case Action::Uv: return run_uv(cl.uv);

@@ -3,7 +3,7 @@
 #include <climits>
 #include <cstdlib>
 
-#include "baker/errors.h"
+#include "base/errors.h"
 
 #ifdef RADBAKE_WITH_MPI
 #include <mpi.h>

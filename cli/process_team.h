@@ -4,7 +4,7 @@
 
 #include <memory>
 
-#include "baker/team.h"
+#include "baker/sharing/team.h"
 
 namespace radbake {
 

@@ -13,7 +13,7 @@
 #include <sstream>
 #include <thread>
 
-#include "baker/errors.h"
+#include "base/errors.h"
 #include "cli/interrupts.h"
 #include "cli/served_files.h"
 

@@ -7,7 +7,7 @@
 #include <map>
 #include <stdexcept>
 
-#include "baker/errors.h"
+#include "base/errors.h"
 #include "uv/charts.h"
 
 namespace radbake {
@@ -161,9 +161,9 @@ std::vector<Chart> make_charts(const std::vector<MeshView>& meshes, const std::v
 
 Atlas ensure_lightmap_uvs(const std::vector<MeshView>& meshes, const AtlasOptions& options) {
   if (options.max_page_size < 16 || options.max_page_size > 16384)
-    throw std::invalid_argument("maximum page size must be 16..16384 texels");
-  if (options.padding < 0 || options.padding > 64) throw std::invalid_argument("padding must be 0..64 texels");
-  if (!(options.texel_density >= 0)) throw std::invalid_argument("texel density must be positive");
+    throw InputError("maximum page size must be 16..16384 texels");
+  if (options.padding < 0 || options.padding > 64) throw InputError("padding must be 0..64 texels");
+  if (!(options.texel_density >= 0)) throw InputError("texel density must be positive");
   const auto start = std::chrono::steady_clock::now();
   UnwrapProgress progress(options.progress);
 

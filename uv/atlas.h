@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "baker/math.h"
-#include "baker/progress.h"
+#include "base/math.h"
+#include "base/progress.h"
 
 namespace radbake {
 
@@ -54,7 +54,7 @@ struct AtlasOptions {
   // page of 1024 was 828,000 texels and 20 s); a larger model gets larger texels, reported.
   size_t automatic_texels = 50000;
   // Called with the stage "lightmap uvs" and the fraction done, at least every few tenths of a
-  // second of work; returning false stops the unwrap, which throws Cancelled (baker/errors.h), as
+  // second of work; returning false stops the unwrap, which throws Cancelled (base/errors.h), as
   // a bake's callback stops a bake. A large mesh can take minutes to unwrap.
   ProgressCallback progress = {};
 };
@@ -106,6 +106,8 @@ struct Atlas {
   std::vector<std::string> warnings;
 };
 
+// Throws InputError for options out of their range (a page size outside 16..16384, padding outside
+// 0..64, a negative density), and Cancelled when options.progress asks to stop.
 Atlas ensure_lightmap_uvs(const std::vector<MeshView>& meshes, const AtlasOptions& options);
 
 // Why a mesh's own TEXCOORD_1 cannot be used at a page of `resolution` texels, or "" when it can.

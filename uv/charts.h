@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "baker/math.h"
+#include "base/math.h"
 #include "uv/atlas.h"
 #include "uv/half_edge_mesh.h"
 

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "baker/math.h"
+#include "base/math.h"
 
 namespace radbake {
 

@@ -12,7 +12,7 @@
 #include <sstream>
 #include <thread>
 
-#include "io/gltf.h"
+#include "io/gltf/gltf_loader.h"
 #include "support/commands.h"
 #include "support/scene_builders.h"
 
@@ -41,6 +41,23 @@ TEST(Cli, HelpListsTheOptionsAndExitsZero) {
   for (const char* option : {"--density", "--max-page-size", "--tolerance", "--solver", "--threads", "--seed", "--store",
                              "--quiet", "-o, --output"})
     EXPECT_NE(r.out.find(option), std::string::npos) << option;
+}
+
+// The version is written once, as CMake's PROJECT_VERSION; the Blender add-on's bl_info, which
+// Blender reads as a literal, must say the same.
+TEST(Cli, VersionIsCMakesProjectVersionAndTheAddOnsToo) {
+  const Outcome r = radbake("--version");
+  EXPECT_EQ(r.status, 0);
+  const std::string cmake = slurp(test::source_path("CMakeLists.txt"));
+  const size_t at = cmake.find("project(radbake VERSION ");
+  ASSERT_NE(at, std::string::npos);
+  const std::string version = cmake.substr(at + 24, cmake.find(' ', at + 24) - at - 24);
+  EXPECT_EQ(r.out, "radbake " + version + "\n");
+  std::string tuple = version;
+  for (size_t dot; (dot = tuple.find('.')) != std::string::npos;) tuple.replace(dot, 1, ", ");
+  EXPECT_NE(slurp(test::source_path("blender_addon/radbake/__init__.py")).find("\"version\": (" + tuple + "),"),
+            std::string::npos)
+      << "bl_info's version is not " << version;
 }
 
 TEST(Cli, UsageErrorsExitTwoWithOneLine) {
@@ -407,29 +424,6 @@ TEST(Cli, DensityIsLoweredToFitOnePageOnlyWhenAsked) {
   EXPECT_TRUE(one["density_lowered"].get<bool>());
   ASSERT_EQ(one["warnings"].size(), 1u);  // and it says so
   EXPECT_NE(one["warnings"][0].get<std::string>().find("lowered from 400"), std::string::npos);
-}
-
-// The README's example commands run as written (with out/ moved to a temporary folder).
-TEST(Cli, ReadmeExamplesRun) {
-  std::stringstream readme(slurp(test::source_path("README.md")));
-  std::string parent = test::fresh_folder("cli_readme"), line;
-  size_t ran = 0;
-  while (std::getline(readme, line)) {
-    const std::string prefix = "./build/radbake ";
-    if (line.rfind(prefix, 0) != 0) continue;
-    std::string args = line.substr(prefix.size());
-    for (size_t at; (at = args.find(" out/")) != std::string::npos;) args.replace(at, 5, " " + parent + "/");
-    for (const std::string folder : {" samples/", " tests/"})
-      for (size_t at; (at = args.find(folder)) != std::string::npos;)
-        args.replace(at, folder.size(), " " + test::source_path(folder.substr(1)));
-    Outcome r = radbake(args + (args.find("bake") == 0 ? " --quiet" : ""));
-    EXPECT_EQ(r.status, 0) << line << "\n" << r.err;
-    ++ran;
-  }
-  EXPECT_GE(ran, 3u);
-  // And the two set-up commands are the ones ./dev offers.
-  std::string dev = slurp(test::source_path("dev"));
-  for (const char* command : {"  sample)", "  test)", "  bench)", "  asan)"}) EXPECT_NE(dev.find(command), std::string::npos);
 }
 
 // The Khronos glTF-Validator (npm package gltf-validator, run by tests/tools/validate_gltf.mjs;

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
-#include "io/lightmap_images.h"
+#include "io/lightmaps/lightmap_images.h"
 #include "support/commands.h"
 #include "support/scene_builders.h"
 
@@ -72,7 +72,7 @@ TEST(DaylightCli, ASunPlacedByASiteAndTimeAddsItsDirectNormalIlluminanceTimesCos
 }
 
 TEST(DaylightCli, APerezSkyFromAnHourOfWeatherLightsTheFloorWithItsDiffuseAndDirectIlluminance) {
-  // gendaylit's clear case (tests/baker/perez_sky_test.cpp): 21 June noon at 40 N, 105 W (UTC-7),
+  // gendaylit's clear case (tests/daylight/perez_sky_test.cpp): 21 June noon at 40 N, 105 W (UTC-7),
   // 700 W/m2 direct normal, 120 W/m2 diffuse horizontal. gendaylit 6.1a: epsilon 6.6905, diffuse
   // 15,402 lx, direct normal 72,453 lx.
   const Baked b = bake_in_daylight("open_floor", "perez",

@@ -8,7 +8,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "io/lightmap_images.h"
+#include "io/lightmaps/lightmap_images.h"
 #include "support/commands.h"
 #include "support/scene_builders.h"
 

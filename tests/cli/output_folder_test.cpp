@@ -12,7 +12,7 @@
 #include <nlohmann/json.hpp>
 #include <thread>
 
-#include "io/gltf.h"
+#include "io/gltf/gltf_loader.h"
 #include "support/commands.h"
 #include "support/scene_builders.h"
 

@@ -16,8 +16,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "io/false_colour.h"
-#include "io/lightmap_images.h"
+#include "io/analysis/false_colour.h"
+#include "io/lightmaps/lightmap_images.h"
 #include "support/commands.h"
 #include "support/scene_builders.h"
 

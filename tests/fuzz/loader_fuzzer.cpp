@@ -11,8 +11,8 @@
 #include <fstream>
 #include <string>
 
-#include "baker/errors.h"
-#include "io/gltf.h"
+#include "base/errors.h"
+#include "io/gltf/gltf_loader.h"
 
 namespace {
 

@@ -7,10 +7,11 @@
 #include <cmath>
 #include <filesystem>
 
-#include "baker/errors.h"
-#include "baker/patch_transport.h"
+#include "baker/pipeline/bake.h"
+#include "baker/transport/patch_transport.h"
+#include "base/errors.h"
 #include "hard_case_checks.h"
-#include "io/gltf.h"
+#include "io/gltf/gltf_loader.h"
 #include "support/scene_builders.h"
 
 namespace radbake {

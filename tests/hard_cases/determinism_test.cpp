@@ -5,7 +5,8 @@
 // sum depends on how the work is split.
 #include <gtest/gtest.h>
 
-#include "baker/back_faces.h"
+#include "baker/pipeline/bake.h"
+#include "baker/surface/back_faces.h"
 #include "hard_cases/hard_case_checks.h"
 #include "support/scene_builders.h"
 

@@ -1,11 +1,11 @@
 // Single- and double-sided materials as glTF's doubleSided says: a single-sided surface has a
 // front only (it emits and reflects from its front, and light striking its back is absorbed); a
-// double-sided one on an open surface has two faces with texels of their own (baker/back_faces.h),
+// double-sided one on an open surface has two faces with texels of their own (baker/surface/back_faces.h),
 // so it emits from both and each face shows the light that reaches it. Both kinds block light
 // from both sides.
 #include <gtest/gtest.h>
 
-#include "baker/material_sampler.h"
+#include "baker/surface/material_sampler.h"
 #include "hard_cases/hard_case_checks.h"
 #include "support/closed_forms.h"
 #include "support/scene_builders.h"

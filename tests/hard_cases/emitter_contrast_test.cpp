@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-#include "baker/material_sampler.h"
+#include "baker/surface/material_sampler.h"
 #include "hard_cases/hard_case_checks.h"
 #include "support/scene_builders.h"
 

@@ -4,7 +4,7 @@
 // baker that mixes the gap's texels with the open ceiling's beside them, in a patch or in a texel
 // across the lamp's edge, shines the gap's light into the room: 26% more light in this room, 44%
 // more in the Cornell box, before texels and patches were split at the edges of covers
-// (baker/sample_placement.cpp). So the room must read what the lamp single-sided gives.
+// (baker/surface/sample_placement.cpp). So the room must read what the lamp single-sided gives.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,8 +12,9 @@
 #include <string>
 #include <vector>
 
+#include "base/scene.h"
 #include "hard_cases/hard_case_checks.h"
-#include "io/gltf.h"
+#include "io/gltf/gltf_loader.h"
 #include "support/scene_builders.h"
 
 namespace radbake {
@@ -82,7 +83,7 @@ struct Case {
 };
 void PrintTo(const Case& c, std::ostream* out) { *out << c.name; }
 
-// What `--quality production` sets (cli/command_line.cpp, apply_quality_preset): patches of 4
+// What `--quality production` sets (baker/pipeline/quality_presets.cpp): patches of 4
 // texels, more rays.
 BakeOptions production() {
   BakeOptions options;

@@ -5,7 +5,7 @@
 
 #include <functional>
 
-#include "baker/bake.h"
+#include "baker/pipeline/bake.h"
 
 namespace radbake::test {
 

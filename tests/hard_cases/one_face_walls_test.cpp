@@ -1,7 +1,7 @@
 // Issue 11: a room whose ceiling and one wall are single double-sided faces, as Blender's
 // Archimesh builds them (the ceiling one face, its normal up toward the roof), with the sun outside
 // shining in through a window and a lamp inside. Each face of a double-sided wall has texels of
-// its own (baker/back_faces.h), so inside, the room must read what the same room built of
+// its own (baker/surface/back_faces.h), so inside, the room must read what the same room built of
 // inward-facing single-sided faces reads: the inside of the ceiling shows the lamp, not the
 // sunlit roof.
 #include <gtest/gtest.h>

@@ -7,6 +7,7 @@
 
 #include <cmath>
 
+#include "baker/pipeline/bake.h"
 #include "hard_cases/hard_case_checks.h"
 #include "support/scene_builders.h"
 

@@ -5,7 +5,7 @@
 // and the black emitter).
 #include <gtest/gtest.h>
 
-#include "baker/material_sampler.h"
+#include "baker/surface/material_sampler.h"
 #include "hard_cases/hard_case_checks.h"
 #include "support/closed_forms.h"
 #include "support/scene_builders.h"

@@ -4,7 +4,7 @@
 #include <functional>
 #include <vector>
 
-#include "baker/math.h"
+#include "base/math.h"
 
 namespace radbake::test {
 

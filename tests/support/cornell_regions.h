@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "baker/elements.h"
+#include "baker/surface/elements.h"
 
 namespace radbake::test {
 

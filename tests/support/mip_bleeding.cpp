@@ -4,8 +4,8 @@
 #include <cmath>
 #include <map>
 
-#include "baker/finish.h"
-#include "io/lightmap_images.h"
+#include "baker/finish/finish.h"
+#include "io/lightmaps/lightmap_images.h"
 #include "uv/texel_coverage.h"
 
 namespace radbake::test {

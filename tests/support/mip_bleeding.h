@@ -1,5 +1,5 @@
 // How much a neighbouring chart bleeds into what a texel reads at each mip level of a lightmap
-// page (docs/mip_bleeding.md): shared by tests/baker/mip_bleeding_test.cpp, which asserts it, and
+// page (docs/mip_bleeding.md): shared by tests/baker/finish/mip_bleeding_test.cpp, which asserts it, and
 // bench/mip_bleeding.cpp, which prints the table.
 #pragma once
 

@@ -7,10 +7,12 @@
 #include <filesystem>
 #include <fstream>
 
-#include "io/gltf.h"
-#include "baker/back_faces.h"
-#include "baker/surface.h"
-#include "io/lightmap_images.h"
+#include "baker/pipeline/bake.h"
+#include "baker/surface/back_faces.h"
+#include "baker/surface/surface.h"
+#include "io/gltf/gltf_loader.h"
+#include "io/gltf/gltf_writer.h"
+#include "io/lightmaps/lightmap_images.h"
 
 namespace radbake::test {
 

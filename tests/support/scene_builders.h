@@ -5,8 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "baker/bake.h"
-#include "baker/scene.h"
+#include "baker/pipeline/bake_options.h"
+#include "baker/pipeline/bake_result.h"
+#include "base/scene.h"
 #include "uv/atlas.h"
 
 namespace radbake::test {

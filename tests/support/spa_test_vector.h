@@ -3,7 +3,7 @@
 // degrees.
 #pragma once
 
-#include "baker/sun_position.h"
+#include "daylight/sun_position.h"
 
 namespace radbake::test {
 

@@ -4,7 +4,8 @@
 
 #include <map>
 
-#include "io/gltf.h"
+#include "base/errors.h"
+#include "io/gltf/gltf_loader.h"
 #include "support/scene_builders.h"
 #include "uv/texel_coverage.h"
 
@@ -117,6 +118,16 @@ TEST(Atlas, AwkwardTrianglesEachGetTheirOwnArea) {
     expect_sound_layout(scene, atlas, padding);
     EXPECT_EQ(atlas.meshes[0].triangle_chart[2], UINT32_MAX);  // the zero-area triangle has no chart
   }
+}
+
+// A caller's out-of-range options are bad input (exit status 2 in the CLI), not a bug of ours.
+TEST(Atlas, OptionsOutOfTheirRangeAreAnInputError) {
+  Scene scene;
+  test::add_quad(scene, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, test::add_material(scene, {0.5f, 0.5f, 0.5f}));
+  for (const AtlasOptions& bad : {AtlasOptions{64.0f, 8, 2}, AtlasOptions{64.0f, 32768, 2}, AtlasOptions{64.0f, 512, 65},
+                                  AtlasOptions{64.0f, 512, -1}, AtlasOptions{-1.0f, 512, 2}})
+    EXPECT_THROW(test::unwrap(scene, bad), InputError) << bad.max_page_size << " " << bad.padding << " " << bad.texel_density;
+  EXPECT_NO_THROW(test::unwrap(scene, AtlasOptions{64.0f, 512, 2}));
 }
 
 TEST(Atlas, TooMuchForOnePageMakesMorePagesNotSmallerTexels) {

@@ -7,8 +7,8 @@
 #include <cstdint>
 #include <set>
 
-#include "baker/surface.h"
-#include "io/gltf.h"
+#include "baker/surface/surface.h"
+#include "io/gltf/gltf_loader.h"
 #include "support/scene_builders.h"
 
 namespace radbake {

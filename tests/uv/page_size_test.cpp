@@ -6,7 +6,7 @@
 
 #include <cstdint>
 
-#include "io/gltf.h"
+#include "io/gltf/gltf_loader.h"
 #include "support/scene_builders.h"
 
 namespace radbake {

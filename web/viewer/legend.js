@@ -1,5 +1,5 @@
 // The viewer's colour scales and their legends: Google's turbo map (Mikhailov 2019, by its
-// published polynomial, as io/false_colour.cpp draws radbake's own images) and radbake diff's
+// published polynomial, as io/analysis/false_colour.cpp draws radbake's own images) and radbake diff's
 // white-to-red/blue difference.
 
 const RED = [0.13572138, 4.61539260, -42.66032258, 132.13108234, -152.94239396, 59.28637943];

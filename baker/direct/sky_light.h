@@ -1,0 +1,53 @@
+// The sun, a disc 0.53 degree across, by shadow rays to points spread over it (soft shadow edges,
+// as wide as the disc's angle times the distance to what casts them).
+//
+// The sky as a light source: each texel's illuminance from the sky it sees, by cosine-distributed
+// rays from points over its footprint; a ray that leaves the scene upward takes the sky's
+// luminance in its direction, one that leaves below the horizon the ground's: an endless
+// Lambertian plane lit by the whole unobstructed sky, L = rho E_h / pi. One that strikes a
+// surface, none. The light the surfaces then reflect is the solve's, as for lamps. What the sky and
+// the sun are (SkyLight, SkyView) is daylight/sky.h's; this file casts the rays.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "baker/surface/elements.h"
+#include "baker/surface/light_direction.h"
+#include "baker/surface/ray_tracer.h"
+#include "baker/surface/sampling.h"
+#include "baker/surface/surface.h"
+#include "base/progress.h"
+#include "daylight/sky.h"
+
+namespace radbake {
+
+// The patterns of a point's sky rays and sun rays, drawn from its generator in the order the sky's
+// irradiance draws them: ray k of n leaves from origin_of(cmj_sample(k, n, origin)) along
+// hemisphere_direction(n, ng, cmj_sample(k, n, direction)); sun ray k toward
+// toward_sun(cmj_sample(k, n, sun_disc)). Daylight coefficients cast the very same rays.
+struct SkyRayPatterns {
+  uint32_t origin, direction, sun_origin, sun_disc;
+  explicit SkyRayPatterns(Rng& rng)
+      : origin(rng.next_u32()), direction(rng.next_u32()), sun_origin(rng.next_u32()), sun_disc(rng.next_u32()) {}
+};
+
+// Rays start a millionth of the scene off a sensor, so a sensor lying on a surface (a work plane
+// at height 0) does not see the surface it lies on.
+inline Vec3 sensor_origin(Vec3 position, Vec3 normal, float scene_extent) { return position + normal * (1e-6f * scene_extent); }
+
+// The share of the sun's disc seen from `origin`: `rays` shadow rays spread over the disc by
+// `pattern`, each counting what of it passes (glazing); 0 when the sun is down or absent.
+double sun_disc_seen(const SkyView& view, const RayTracer& tracer, Vec3 origin, uint32_t rays, uint32_t pattern);
+
+// At points in the air (sensors) facing `normals`, lux; each point's rays all start at it.
+std::vector<double> sky_illuminance_at(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
+                                       const RayTracer& tracer, const SkyLight& sky, uint64_t seed);
+
+// Per element of `range` (the first at index 0), lux (grey: the sky is white); with `directions`,
+// where it comes from (light_direction.h).
+std::vector<Rgb> sky_irradiance(const Elements& elements, const Surface& surface, const RayTracer& tracer,
+                                const SkyLight& sky, uint64_t seed, Progress& progress, ElementRange range = {},
+                                std::vector<LightDirection>* directions = nullptr);
+
+}  // namespace radbake

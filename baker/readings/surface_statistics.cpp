@@ -1,0 +1,37 @@
+#include "baker/readings/surface_statistics.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace radbake {
+
+std::vector<SurfaceStatistics> surface_statistics(const Scene& scene, const Surface& surface,
+                                                  const Elements& elements, const std::vector<Rgb>& irradiance) {
+  std::vector<SurfaceStatistics> out(scene.instances.size());
+  std::vector<double> weighted(scene.instances.size(), 0.0);
+  for (size_t k = 0; k < out.size(); ++k) {
+    const MeshInstance& inst = scene.instances[k];
+    out[k].instance = int(k);
+    out[k].name = inst.back_of >= 0 ? scene.instances[size_t(inst.back_of)].name + " (back)" : inst.name;
+    out[k].min = INFINITY;
+  }
+  for (size_t i = 0; i < elements.size(); ++i) {
+    if (!elements.valid(i)) continue;
+    SurfaceStatistics& s = out[surface.instance[elements.triangle[i]]];
+    const double lux = double(sum(irradiance[i])) / 3.0;
+    s.area += elements.area[i];
+    weighted[size_t(s.instance)] += lux * elements.area[i];
+    s.min = std::min(s.min, lux);
+    s.max = std::max(s.max, lux);
+  }
+  std::vector<SurfaceStatistics> kept;
+  for (SurfaceStatistics& s : out) {
+    if (!(s.area > 0)) continue;  // no texel: hidden, degenerate or outside the atlas
+    s.mean = weighted[size_t(s.instance)] / s.area;
+    s.uniformity = s.mean > 0 ? s.min / s.mean : 0.0;
+    kept.push_back(std::move(s));
+  }
+  return kept;
+}
+
+}  // namespace radbake

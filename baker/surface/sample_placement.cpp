@@ -1,0 +1,257 @@
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "baker/surface/elements.h"
+#include "baker/surface/ray_tracer.h"
+#include "baker/surface/sampling.h"
+
+namespace radbake {
+namespace {
+
+constexpr int kTangentProbes = 8;
+constexpr int kBurialProbes = 16;
+constexpr int kFootprintCells = 4;  // per side: the grid of Elements::visible_cells
+// Bakery's rule of thumb: a sample that sees back faces in half its hemisphere is inside geometry.
+constexpr float kBuriedBackfaceFraction = 0.5f;
+// Texels: how close over a point another surface covers it (under_cover), so that a texel across
+// the cover's edge is split. The light in a gap that thin stays in it: the slit out is a sixteenth
+// of a texel high. From a thicker gap much of it gets out round the edge (a lamp facing a ceiling
+// 1 cm over it, under 8 cm texels, lit the ceiling beside it so), and split texels there would
+// lose that light: 3% of the lamp's.
+constexpr float kCoverReach = 1.0f / 16;
+// Texels: how close over a sample a cover keeps it out of the patches of samples in the open. A
+// patch is many texels wide, and most of the light in a gap under it, even one thicker than
+// kCoverReach, stays there; shot from a patch that also holds the open surface beside the gap, it
+// would light the room.
+constexpr float kPatchCoverReach = 0.5f;
+// Stratified points measuring the shares of a texel on either side of a cover's edge.
+constexpr uint32_t kCoverShareProbes = 64;
+
+}  // namespace
+
+bool under_cover(const Surface& surface, const RayTracer& tracer, uint32_t triangle, Vec3 point) {
+  return tracer.occluded(point, surface.normal[triangle], 0.0f, kCoverReach * surface.texel_size(triangle));
+}
+
+namespace {
+
+// A texel across a cover's edge: it keeps the cells and the share of its area on its sample's
+// side; the rest of its area goes to `taker`, a valid neighbour on the far side, or, with none
+// (the far side buried: the gap under a single-sided lamp), to nobody, as behind a wall.
+struct CoverSplit {
+  bool split = false;
+  int32_t taker = -1;
+  float near_share = 1;
+  uint16_t far_cells = 0;
+};
+
+// How element i splits at a cover's edge, if one crosses its footprint and a neighbour lies on the
+// far side: rays then start only on its sample's side, so the gap's light does not leave from the
+// open side, nor the open's from the gap. The shares are measured at 64 stratified points, not by
+// cell centres, which place the edge only to a quarter texel: the area across it carries the
+// gap's light into the energy count (an edge a tenth of a texel off the centres lost 1% of all the
+// light), and a sliver of gap between the centres would still be lit and shine into the open.
+CoverSplit split_at_cover(const Elements& e, const Surface& surface, const RayTracer& tracer, size_t i,
+                          uint32_t pattern) {
+  const uint32_t width = uint32_t(surface.pages[e.page[i]].width);
+  const int64_t x = e.texel[i] % width, y = e.texel[i] / width;
+  const std::vector<int32_t>& at = e.element_at[e.page[i]];
+  const int64_t height = int64_t(at.size() / width);
+  auto neighbour = [&](int64_t dx, int64_t dy) {
+    if (x + dx < 0 || y + dy < 0 || x + dx >= int64_t(width) || y + dy >= height) return int32_t(-1);
+    return at[size_t((y + dy) * int64_t(width) + x + dx)];
+  };
+  auto across = [&](int32_t j) {
+    return j >= 0 && size_t(j) != i && ((e.flags[size_t(j)] ^ e.flags[i]) & kUnderCover) &&
+           surface.chart[e.triangle[size_t(j)]] == surface.chart[e.triangle[i]];
+  };
+  bool any = false;
+  for (int64_t dy = -1; dy <= 1; ++dy)
+    for (int64_t dx = -1; dx <= 1; ++dx) any |= across(neighbour(dx, dy));
+  if (!any) return {};
+
+  const uint32_t t = e.triangle[i];
+  const Vec3 lift = surface.normal[t] * e.offset[i];
+  const bool covered = e.flags[i] & kUnderCover;
+  enum Side { kOffSurface, kNear, kFar };
+  auto side_at = [&](Vec2 u) {
+    Vec3 p;
+    if (!footprint_surface_point(e, surface, i, u, p)) return kOffSurface;
+    return under_cover(surface, tracer, t, p + lift) == covered ? kNear : kFar;
+  };
+  constexpr int k = kFootprintCells;
+  int near_count = 0, far_count = 0;
+  float far_x = 0, far_y = 0;  // sum of the far side's points, in texels from the texel's centre
+  uint16_t centre_far = 0, touched = 0;  // cells whose centre, or any of whose points, is across
+  for (uint32_t m = 0; m < kCoverShareProbes; ++m) {
+    const Vec2 u = cmj_sample(m, kCoverShareProbes, pattern);
+    const int cell = std::min(k - 1, int(u.y * k)) * k + std::min(k - 1, int(u.x * k));
+    const Side side = e.visible_cells[i] >> cell & 1 ? side_at(u) : kOffSurface;
+    near_count += side == kNear;
+    if (side != kFar) continue;
+    ++far_count;
+    far_x += u.x - 0.5f, far_y += u.y - 0.5f;
+    touched |= uint16_t(1u << cell);
+  }
+  for (int c = 0; c < k * k; ++c)
+    if ((e.visible_cells[i] >> c & 1) && side_at({(c % k + 0.5f) / k, (c / k + 0.5f) / k}) == kFar)
+      centre_far |= uint16_t(1u << c);
+  // Rays start (and direct light is taken) at the centres of the cells kept, so a cell the edge
+  // crosses goes too: its centre may lie a hair from the slit, where the light escaping from the
+  // gap is concentrated (taken there for a quarter texel, it lit the room 0.5% more). Unless that
+  // leaves the sample's side no cell; then the cells whose centres are on it stay. With none of
+  // those, or no point on its side (a sample on a sliver of it), the texel stays whole.
+  CoverSplit split;
+  split.far_cells = (e.visible_cells[i] & ~(centre_far | touched)) ? centre_far | touched : centre_far;
+  if (far_count == 0 || near_count == 0 || !(e.visible_cells[i] & ~split.far_cells)) return {};
+
+  float nearest = INFINITY;
+  for (int64_t dy = -1; dy <= 1; ++dy)
+    for (int64_t dx = -1; dx <= 1; ++dx) {
+      const int32_t j = neighbour(dx, dy);
+      const float distance = std::hypot(float(dx) - far_x / float(far_count), float(dy) - far_y / float(far_count));
+      if (across(j) && e.valid(size_t(j)) && distance < nearest) nearest = distance, split.taker = j;
+    }
+  // A buried texel's far part matters only as a taker's area.
+  split.split = e.valid(i) || split.taker >= 0;
+  split.near_share = float(near_count) / float(near_count + far_count);
+  return split;
+}
+
+}  // namespace
+
+void place_samples(Elements& e, const Surface& surface, const RayTracer& tracer, uint64_t seed, Progress& progress) {
+  const size_t n = e.size();
+  // Per element: 0 in the open, 1 under a cover within kPatchCoverReach, 2 within kCoverReach.
+  std::vector<uint8_t> cover(n, 0);
+  progress.begin("sample placement", n);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 512), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t i = r.begin(); i < r.end(); ++i) {
+      const uint32_t t = e.triangle[i];
+      const Vec3 ng = surface.normal[t];
+      const float texel_size = surface.texel_size(t);
+      const float eps = e.offset[i];
+      Vec3 tangent, bitangent;
+      orthonormal_basis(ng, tangent, bitangent);
+
+      // Along the surface, half a texel diagonal each way: a back face that close means the texel
+      // centre lies behind a wall standing on this surface; step past the nearest one.
+      const float reach = 0.75f * texel_size;
+      Vec3 origin = e.position[i] + ng * eps;
+      float nearest_back = INFINITY;
+      Vec3 escape{};
+      for (int k = 0; k < kTangentProbes; ++k) {
+        float angle = 2.0f * kPi * k / kTangentProbes;
+        Vec3 dir = tangent * std::cos(angle) + bitangent * std::sin(angle);
+        Hit hit = tracer.intersect(origin, dir, 0.0f, reach);
+        if (hit.missed()) continue;
+        e.flags[i] |= kNearGeometry;
+        if (!hit.front && hit.distance < nearest_back) {
+          nearest_back = hit.distance;
+          escape = dir;
+        }
+      }
+      if (std::isfinite(nearest_back)) {
+        e.position[i] = e.position[i] + escape * (nearest_back + 2 * eps);
+        e.flags[i] |= kPushedOut;
+      }
+      // The tangent probes pass under a cover (a lamp 0.1 mm under the ceiling): look along the normal.
+      const Hit over = tracer.intersect(e.position[i] + ng * eps, ng, 0.0f, kPatchCoverReach * texel_size);
+      if (!over.missed()) cover[i] = over.distance < kCoverReach * texel_size ? 2 : 1;
+      if (cover[i] == 2) e.flags[i] |= kUnderCover;
+
+      // Part of a texel that straddles a wall lies behind it and gets no light from this side:
+      // keep only the area the sample point can see along the surface, or light is
+      // over-counted (the energy balance shows it) on every texel around a block's foot.
+      if (e.flags[i] & kNearGeometry) {
+        const int k = kFootprintCells;
+        int on_surface = 0, visible = 0;
+        e.visible_cells[i] = 0;
+        for (int sy = 0; sy < k; ++sy)
+          for (int sx = 0; sx < k; ++sx) {
+            Vec3 p;
+            if (!footprint_surface_point(e, surface, i, {(sx + 0.5f) / k, (sy + 0.5f) / k}, p)) continue;
+            ++on_surface;
+            Vec3 from = e.position[i] + ng * eps, to = p + ng * eps;
+            Vec3 d = to - from;
+            float dist = length(d);
+            if (dist <= eps || !tracer.occluded(from, d / dist, 0.0f, dist)) {
+              ++visible;
+              e.visible_cells[i] |= uint16_t(1u << (sy * k + sx));
+            }
+          }
+        if (on_surface > 0) e.area[i] *= float(visible) / float(on_surface);
+        if (visible == 0) e.flags[i] |= kBuried;  // all of it is behind the wall
+      }
+
+      Rng rng(seed, Stream::Probe, i);
+      uint32_t pattern = rng.next_u32();
+      int back = 0;
+      Vec3 from = e.position[i] + ng * eps;
+      for (int k = 0; k < kBurialProbes; ++k) {
+        Vec3 dir = cosine_direction(ng, cmj_sample(uint32_t(k), kBurialProbes, pattern));
+        Hit hit = tracer.intersect(from, dir, 0.0f, INFINITY);
+        back += !hit.missed() && !hit.front;
+      }
+      if (back >= kBuriedBackfaceFraction * kBurialProbes) e.flags[i] |= kBuried;
+    }
+    progress.advance(r.size());
+  });
+
+  // Texels across a cover's edge, once every sample's side is known; buried ones too (a ceiling
+  // texel whose sample sees the back of a single-sided lamp just under it may lie half in the
+  // open). Their far parts' areas go to the takers after every split, in order, so the same areas
+  // come out every run.
+  std::vector<CoverSplit> splits(n);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 512), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t i = r.begin(); i < r.end(); ++i)
+      splits[i] = split_at_cover(e, surface, tracer, i, Rng(seed, Stream::Cover, i).next_u32());
+  });
+  std::vector<float> far_area(n, 0);
+  for (size_t i = 0; i < n; ++i) {
+    if (!splits[i].split) continue;
+    far_area[i] = e.area[i] * (1 - splits[i].near_share);
+    e.area[i] *= splits[i].near_share;
+    e.visible_cells[i] &= uint16_t(~splits[i].far_cells);
+    e.flags[i] |= kNearGeometry;
+  }
+  for (size_t i = 0; i < n; ++i)
+    if (splits[i].taker >= 0) e.area[size_t(splits[i].taker)] += far_area[i];
+
+  // Joins to the right and lower neighbours, once every sample has its final place. Only texels
+  // near geometry can have a wall between them and a neighbour; the rest join without a ray. A
+  // texel under a cover and one in the open (or under a cover of the other reach) never join: a
+  // patch holding both would shine the gap's light into the open.
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 512), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t i = r.begin(); i < r.end(); ++i) {
+      if (!e.valid(i)) continue;
+      const uint32_t width = uint32_t(surface.pages[e.page[i]].width);
+      const uint32_t x = e.texel[i] % width, y = e.texel[i] / width;
+      const std::vector<int32_t>& at = e.element_at[e.page[i]];
+      const size_t height = at.size() / width;
+      const uint8_t bits[2] = {kJoinsRight, kJoinsDown};
+      for (int k = 0; k < 2; ++k) {
+        uint32_t nx = x + (k == 0), ny = y + (k == 1);
+        if (nx >= width || ny >= height) continue;
+        int32_t j = at[size_t(ny) * width + nx];
+        if (j < 0 || !e.valid(size_t(j)) || surface.chart[e.triangle[size_t(j)]] != surface.chart[e.triangle[i]] ||
+            cover[i] != cover[size_t(j)])
+          continue;
+        bool joined = true;
+        if ((e.flags[i] | e.flags[size_t(j)]) & kNearGeometry) {
+          Vec3 from = e.position[i] + surface.normal[e.triangle[i]] * e.offset[i];
+          Vec3 to = e.position[size_t(j)] + surface.normal[e.triangle[size_t(j)]] * e.offset[size_t(j)];
+          Vec3 d = to - from;
+          float dist = length(d);
+          joined = !(dist > 0) || !tracer.occluded(from, d / dist, 0.0f, dist);
+        }
+        if (joined) e.flags[i] |= bits[k];
+      }
+    }
+  });
+  progress.end();
+}
+
+}  // namespace radbake

@@ -1,0 +1,305 @@
+#include "baker/transport/patch_transport.h"
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "baker/surface/sampling.h"
+
+namespace radbake {
+
+namespace {
+
+bool sees(const RayTracer& tracer, Vec3 from, Vec3 to) {
+  Vec3 d = to - from;
+  float dist = length(d);
+  return !(dist > 0) || !tracer.occluded(from, d / dist, 0.0f, dist);
+}
+
+}  // namespace
+
+// Where a wall crosses a texel, the texel's element lies on one side only; a hit on the other side
+// belongs to the neighbour on its own side (or to nobody), never to the element behind the wall,
+// or light would pass through the wall. Likewise across a cover's edge: a hit in the gap belongs
+// to a texel under the cover, one in the open to a texel in the open; where no neighbour holds the
+// hit's side, the texel keeps it.
+int64_t element_for_hit(const Elements& e, const Surface& surface, const RayTracer& tracer, const Hit& hit) {
+  int64_t j = element_at_point(e, surface, hit.triangle, hit.bary);
+  if (j < 0 || !(e.flags[size_t(j)] & kNearGeometry)) return j;
+  const uint32_t width = uint32_t(surface.pages[e.page[size_t(j)]].width);
+  const std::vector<int32_t>& grid = e.element_at[e.page[size_t(j)]];
+  const int64_t x = e.texel[size_t(j)] % width, y = e.texel[size_t(j)] / width, height = int64_t(grid.size() / width);
+  int32_t around[8];
+  int count = 0;
+  for (int64_t dy = -1; dy <= 1; ++dy)
+    for (int64_t dx = -1; dx <= 1; ++dx) {
+      if ((dx == 0 && dy == 0) || x + dx < 0 || y + dy < 0 || x + dx >= width || y + dy >= height) continue;
+      int32_t k = grid[size_t((y + dy) * width + x + dx)];
+      if (k >= 0 && surface.chart[e.triangle[size_t(k)]] == surface.chart[hit.triangle]) around[count++] = k;
+    }
+  const Vec3 at = surface.point(hit.triangle, hit.bary) + surface.normal[hit.triangle] * e.offset[size_t(j)];
+  auto lifted = [&](size_t k) { return e.position[k] + surface.normal[e.triangle[k]] * e.offset[k]; };
+  // Only where a cover's edge passes by (place_samples split the texels there) can the hit lie on
+  // the other side of one from j.
+  uint8_t side = e.flags[size_t(j)] & kUnderCover;
+  if (std::any_of(around, around + count, [&](int32_t k) { return (e.flags[size_t(k)] ^ side) & kUnderCover; }))
+    side = under_cover(surface, tracer, hit.triangle, at) ? kUnderCover : 0;
+  const bool sees_j = sees(tracer, at, lifted(size_t(j)));
+  if (sees_j && (e.flags[size_t(j)] & kUnderCover) == side) return j;
+  for (int k = 0; k < count; ++k)
+    if (e.valid(size_t(around[k])) && (e.flags[size_t(around[k])] & kUnderCover) == side &&
+        sees(tracer, at, lifted(size_t(around[k]))))
+      return around[k];
+  return sees_j ? j : -1;
+}
+
+Landing land(const Elements& elements, const Patches& patches, const Surface& surface, const RayTracer& tracer,
+             Vec3 origin, Vec3 direction) {
+  const Hit hit = tracer.intersect_light_path(origin, direction, 0.0f, INFINITY);
+  Landing at;
+  at.escaped = hit.missed();
+  at.distance = at.escaped ? INFINITY : hit.distance;
+  if (at.escaped || !hit.front) return at;
+  const int64_t element = element_for_hit(elements, surface, tracer, hit);
+  if (element < 0 || patches.patch_of_element[size_t(element)] == UINT32_MAX) return at;
+  at.element = uint32_t(element);
+  at.patch = patches.patch_of_element[at.element];
+  return at;
+}
+
+uint32_t patch_hit(const Elements& elements, const Patches& patches, const Surface& surface,
+                   const RayTracer& tracer, Vec3 origin, Vec3 direction, bool& escaped) {
+  const Landing at = land(elements, patches, surface, tracer, origin, direction);
+  escaped = at.escaped;
+  return at.patch;
+}
+
+namespace {
+
+// Monte Carlo rows sum exactly to what lands, but columns (what each patch receives) carry the
+// noise of everyone else's rays, so even a closed box of equal patches solves to radiosities a
+// few percent apart. Reciprocity (A_p F_pq = A_q F_qp) fixes that: the power exchange matrix
+// G = A F is made symmetric, then scaled as D G D (Knight's symmetric Sinkhorn) until every row
+// again sums to what its rays measured landing. Rows and columns then both add up, so light is
+// conserved and a furnace comes out uniform.
+//
+// Sampled rows do not always admit such a scaling: a small patch in a crevice whose every ray
+// lands on a large neighbour, which in turn sent almost none of its rays back, asks for more
+// exchange between the two than the neighbour's row can hold. The scaling then runs off to 0 and
+// infinity until it overflows (a CAD engine baked to NaN that way). So the scale factors are kept
+// within kMaxScale of one, and a row they would still leave summing to more than it measured is
+// scaled down to it: such a pair stays slightly unreciprocal, but no light is created.
+constexpr double kMaxScale = 64;
+
+// One half of A_p F_pq or of A_q F_qp, on row p of the symmetric exchange matrix G.
+struct Exchange {
+  uint32_t patch;
+  float half;
+  bool operator<(const Exchange& o) const { return patch < o.patch || (patch == o.patch && half < o.half); }
+};
+
+// G in compressed rows, built in place with no row of its own (a million-texel bake has 40,000
+// patches of a thousand targets each: vectors per row, doubling as they grow, took gigabytes).
+struct ExchangeMatrix {
+  std::vector<uint64_t> start;
+  std::vector<Exchange> entries;
+};
+
+ExchangeMatrix symmetric_exchange(const std::vector<float>& area, const std::vector<MeasuredRow>& rows) {
+  const size_t n = rows.size();
+  ExchangeMatrix g;
+  g.start.assign(n + 1, 0);
+  for (size_t p = 0; p < n; ++p)
+    for (auto [q, f] : rows[p]) ++g.start[p + 1], ++g.start[q + 1];
+  for (size_t p = 0; p < n; ++p) g.start[p + 1] += g.start[p];
+  g.entries.resize(g.start[n]);
+  std::vector<uint64_t> fill(g.start.begin(), g.start.end() - 1);
+  for (size_t p = 0; p < n; ++p)
+    for (auto [q, f] : rows[p]) {
+      const float half = float(0.5 * double(area[p]) * f);
+      g.entries[fill[p]++] = {q, half};
+      g.entries[fill[q]++] = {uint32_t(p), half};
+    }
+  // Merge the two halves of each pair, compacting the rows towards the front.
+  uint64_t w = 0;
+  for (size_t p = 0; p < n; ++p) {
+    const uint64_t begin = g.start[p], end = g.start[p + 1];
+    std::sort(g.entries.begin() + std::ptrdiff_t(begin), g.entries.begin() + std::ptrdiff_t(end));
+    g.start[p] = w;
+    for (uint64_t k = begin; k < end; ++k) {
+      if (w > g.start[p] && g.entries[w - 1].patch == g.entries[k].patch) g.entries[w - 1].half += g.entries[k].half;
+      else g.entries[w++] = g.entries[k];
+    }
+  }
+  g.start[n] = w;
+  g.entries.resize(w);
+  return g;
+}
+
+// Writes the balanced rows into `out`, F_pq = d_p G_pq d_q / A_p, and frees the measured rows as
+// soon as G holds them (at a million texels each takes hundreds of MB).
+void balance_reciprocity(const Patches& patches, std::vector<MeasuredRow>&& rows, PatchTransport& out) {
+  const size_t n = rows.size();
+  // Reciprocity holds between the areas that stop light: a ray meets a pane of glass or a cut-out
+  // only where it is opaque (with the probability of its opacity), while the pane's own rays all
+  // leave it, so A_p o_p F_pq = A_q o_q F_qp. With every patch opaque, the areas themselves.
+  std::vector<float> stopping_area = patches.area;
+  for (size_t p = 0; p < patches.opacity.size(); ++p) stopping_area[p] *= patches.opacity[p];
+  auto area = [&](size_t p) { return stopping_area[p]; };
+  std::vector<double> target(n, 0);
+  for (size_t p = 0; p < n; ++p)
+    for (auto [q, f] : rows[p]) target[p] += double(area(p)) * f;
+  const ExchangeMatrix g = symmetric_exchange(stopping_area, rows);
+  std::vector<MeasuredRow>().swap(rows);
+  auto row = [&](size_t p) {
+    return std::make_pair(g.entries.begin() + std::ptrdiff_t(g.start[p]), g.entries.begin() + std::ptrdiff_t(g.start[p + 1]));
+  };
+  std::vector<double> d(n, 1.0);
+  for (int iteration = 0; iteration < 500; ++iteration) {
+    double worst = 0;
+    for (size_t p = 0; p < n; ++p) {
+      if (target[p] <= 0) continue;
+      double sum = 0;
+      for (auto [it, end] = row(p); it != end; ++it) sum += double(it->half) * d[it->patch];
+      double r = d[p] * sum;
+      if (r <= 0) continue;
+      worst = std::max(worst, std::fabs(r / target[p] - 1));
+      d[p] = std::clamp(d[p] * std::sqrt(target[p] / r), 1 / kMaxScale, kMaxScale);
+    }
+    if (worst < 1e-7) break;
+  }
+  std::vector<double> excess(n, 1.0);  // over the convergence tolerance: scaled down to what was measured
+  uint64_t kept = 0;
+  for (size_t p = 0; p < n; ++p) {
+    if (target[p] <= 0 || area(p) <= 0) continue;
+    double sum = 0;
+    for (auto [it, end] = row(p); it != end; ++it) sum += d[p] * it->half * d[it->patch];
+    if (sum > target[p] * (1 + 1e-6)) excess[p] = sum / target[p];
+    kept += g.start[p + 1] - g.start[p];
+  }
+  out.row_start.assign(n + 1, 0);
+  out.target.reserve(kept);
+  out.form_factor.reserve(kept);
+  for (size_t p = 0; p < n; ++p) {
+    if (target[p] > 0 && area(p) > 0)
+      for (auto [it, end] = row(p); it != end; ++it) {
+        out.target.push_back(it->patch);
+        out.form_factor.push_back(float(d[p] * it->half * d[it->patch] / excess[p] / area(p)));
+      }
+    out.row_start[p + 1] = out.target.size();
+  }
+}
+
+}  // namespace
+
+Enclosures find_enclosures(const PatchTransport& t) {
+  const size_t n = t.row_start.empty() ? 0 : t.row_start.size() - 1;
+  std::vector<uint32_t> parent(n);
+  for (size_t p = 0; p < n; ++p) parent[p] = uint32_t(p);
+  auto find = [&](uint32_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  for (size_t p = 0; p < n; ++p)
+    for (uint64_t k = t.row_start[p]; k < t.row_start[p + 1]; ++k) {
+      uint32_t a = find(uint32_t(p)), b = find(t.target[k]);
+      parent[std::max(a, b)] = std::min(a, b);
+    }
+  Enclosures out;
+  out.of_patch.resize(n);
+  std::vector<uint32_t> number(n, UINT32_MAX);
+  for (size_t p = 0; p < n; ++p) {
+    uint32_t root = find(uint32_t(p));
+    if (number[root] == UINT32_MAX) number[root] = uint32_t(out.count++);
+    out.of_patch[p] = number[root];
+  }
+  return out;
+}
+
+std::vector<uint32_t> all_patches(size_t n) {
+  std::vector<uint32_t> which(n);
+  for (size_t p = 0; p < n; ++p) which[p] = uint32_t(p);
+  return which;
+}
+
+PatchTransport balanced_transport(const Patches& patches, MeasuredRows measured) {
+  PatchTransport out;
+  out.escaped = std::move(measured.escaped);
+  out.lost = std::move(measured.lost);
+  out.rays = std::move(measured.rays);
+  balance_reciprocity(patches, std::move(measured.rows), out);
+  return out;
+}
+
+void measure_ray_cast_rows(const Elements& elements, const Patches& patches, const Surface& surface,
+                           const RayTracer& tracer, uint32_t rays_per_patch, const std::vector<double>& power,
+                           const std::vector<uint32_t>& which, uint64_t seed, Progress& progress, MeasuredRows& out) {
+  const size_t patch_count = patches.size();
+  double total_power = 0;
+  for (double p : power) total_power += p;
+  for (uint32_t p : which) {
+    double extra = total_power > 0 ? double(rays_per_patch) * double(patch_count) * power[p] / total_power : 0;
+    out.rays[p] = uint32_t(std::min<double>(16.0 * rays_per_patch, rays_per_patch + std::round(extra)));
+  }
+
+  struct Scratch {
+    RowTally tally;
+    std::vector<double> cumulative_area;
+  };
+  tbb::enumerable_thread_specific<Scratch> scratch;
+  progress.begin("form factors", which.size());
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, which.size(), 8), [&](const tbb::blocked_range<size_t>& r) {
+    Scratch& s = scratch.local();
+    for (size_t w = r.begin(); w < r.end(); ++w) {
+      const uint32_t p = which[w];
+      const uint32_t* first = &patches.members[patches.first_member[p]];
+      const size_t member_count = patches.first_member[p + 1] - patches.first_member[p];
+      s.cumulative_area.resize(member_count);
+      double total = 0;
+      for (size_t m = 0; m < member_count; ++m) s.cumulative_area[m] = total += elements.area[first[m]];
+
+      const uint32_t rays = out.rays[p];
+      Rng rng(seed, Stream::PatchRays, p);
+      const uint32_t origin_pattern = rng.next_u32(), direction_pattern = rng.next_u32();
+      uint32_t escaped = 0, lost = 0;
+      for (uint32_t k = 0; k < rays; ++k) {
+        // Stratified over the patch's area, then within the chosen element's footprint.
+        double pick = (k + rng.uniform()) / rays * total;
+        size_t m = size_t(std::lower_bound(s.cumulative_area.begin(), s.cumulative_area.end(), pick) -
+                          s.cumulative_area.begin());
+        const uint32_t i = first[std::min(m, member_count - 1)];
+        const Vec3 ng = surface.normal[elements.triangle[i]];
+        Vec3 origin = footprint_point(elements, surface, i, cmj_sample(k, rays, origin_pattern));
+        origin += ng * elements.offset[i];
+        Vec3 dir = hemisphere_direction(elements.normal[i], ng, cmj_sample(k, rays, direction_pattern));
+        bool left;
+        uint32_t q = patch_hit(elements, patches, surface, tracer, origin, dir, left);
+        if (q == UINT32_MAX) {
+          escaped += left;
+          lost += !left;
+          continue;
+        }
+        s.tally.add(q, 1, patch_count);
+      }
+      s.tally.take(out.rows[p], float(rays));
+      out.escaped[p] = float(escaped) / float(rays);
+      out.lost[p] = float(lost) / float(rays);
+    }
+    progress.advance(r.size());
+  });
+  progress.end();
+}
+
+PatchTransport trace_patch_transport(const Elements& elements, const Patches& patches, const Surface& surface,
+                                     const RayTracer& tracer, uint32_t rays_per_patch,
+                                     const std::vector<double>& power, uint64_t seed, Progress& progress) {
+  MeasuredRows rows;
+  rows.resize(patches.size());
+  measure_ray_cast_rows(elements, patches, surface, tracer, rays_per_patch, power, all_patches(patches.size()), seed,
+                        progress, rows);
+  return balanced_transport(patches, std::move(rows));
+}
+
+}  // namespace radbake

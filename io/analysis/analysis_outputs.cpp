@@ -1,0 +1,208 @@
+#include "io/analysis/analysis_outputs.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+#include "base/errors.h"
+#include "io/lightmaps/lightmap_images.h"
+
+namespace radbake {
+namespace {
+
+void write_false_colour(const std::string& path, const std::vector<float>& values, int width, int height,
+                        const FalseColourScale& scale, int cell_pixels) {
+  const FalseColourResult image = false_colour(values, width, height, scale, cell_pixels);
+  write_png(path, image.image.width, image.image.height, image.image.rgb);
+}
+
+// Per page, each texel's value (mean of R, G, B) times `factor` where an element wrote it, NaN in
+// the padding.
+std::vector<float> page_values(const LightmapPage& page, double factor) {
+  std::vector<float> values(page.texels.size(), std::numeric_limits<float>::quiet_NaN());
+  for (size_t k = 0; k < values.size(); ++k)
+    if (page.valid[k]) values[k] = float(double(sum(page.texels[k])) / 3.0 * factor);
+  return values;
+}
+
+// An image of one value per pixel as a page of grey texels, for write_exr.
+LightmapPage grey_page(int width, int height, const std::vector<float>& values) {
+  LightmapPage page;
+  page.width = width, page.height = height;
+  page.valid.assign(values.size(), 1);
+  for (float v : values) page.texels.push_back(Rgb{v, v, v});
+  return page;
+}
+
+}  // namespace
+
+void write_work_plane_map(const std::string& path, const WorkPlane& plane, const std::vector<double>& values,
+                          const FalseColourScale& scale) {
+  std::vector<float> grid(plane.sensor_at.size(), std::numeric_limits<float>::quiet_NaN());
+  for (size_t k = 0; k < grid.size(); ++k)
+    if (plane.sensor_at[k] >= 0) grid[k] = float(values[size_t(plane.sensor_at[k])]);
+  // Cells large enough that a small room's grid reads at a glance (about 480 pixels across).
+  const int cell = std::clamp(480 / std::max(plane.columns, plane.rows), 2, 64);
+  write_false_colour(path, grid, plane.columns, plane.rows, scale, cell);
+}
+
+void write_page_map(const std::string& path, const LightmapPage& page, const FalseColourScale& scale) {
+  write_false_colour(path, page_values(page, 1), page.width, page.height, scale, 1);
+}
+
+ReadingSummary summarise(const std::vector<double>& values) {
+  ReadingSummary s;
+  s.count = values.size();
+  if (values.empty()) return s;
+  s.min = *std::min_element(values.begin(), values.end());
+  s.max = *std::max_element(values.begin(), values.end());
+  double total = 0;
+  for (double v : values) total += v;
+  s.mean = total / double(values.size());
+  s.uniformity = s.mean > 0 ? s.min / s.mean : 0.0;
+  return s;
+}
+
+std::vector<Sensor> read_sensor_csv(const std::string& path, size_t max_points) {
+  std::ifstream in(path);
+  if (!in) throw InputError("cannot read the sensor file '" + clipped(path) + "'");
+  std::vector<Sensor> sensors;
+  std::string line;
+  for (size_t number = 1; std::getline(in, line); ++number) {
+    if (line.size() > 4096) throw InputError(clipped(path) + " line " + std::to_string(number) + ": too long for a sensor");
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.find_first_not_of(" \t") == std::string::npos || line[line.find_first_not_of(" \t")] == '#') continue;
+    std::vector<double> fields;
+    std::stringstream cells(line);
+    std::string cell;
+    bool numeric = true;
+    while (std::getline(cells, cell, ',')) {
+      char* end = nullptr;
+      const double v = std::strtod(cell.c_str(), &end);
+      while (end && (*end == ' ' || *end == '\t')) ++end;
+      if (end == cell.c_str() || (end && *end != '\0')) numeric = false;
+      fields.push_back(v);
+    }
+    if (!numeric && sensors.empty() && number == 1) continue;  // a header
+    const bool finite = std::all_of(fields.begin(), fields.end(), [](double v) { return std::isfinite(v) && std::fabs(v) < 1e7; });
+    if (!numeric || !finite || (fields.size() != 3 && fields.size() != 6))
+      throw InputError(clipped(path) + " line " + std::to_string(number) +
+                       ": a sensor is x,y,z or x,y,z,nx,ny,nz (metres, finite numbers)");
+    if (sensors.size() >= max_points)
+      throw InputError(clipped(path) + " holds more than " + std::to_string(max_points) + " sensors");
+    Sensor s;
+    s.position = {float(fields[0]), float(fields[1]), float(fields[2])};
+    if (fields.size() == 6) {
+      const Vec3 n{float(fields[3]), float(fields[4]), float(fields[5])};
+      if (!(length(n) > 1e-6f))
+        throw InputError(clipped(path) + " line " + std::to_string(number) + ": the sensor's normal is zero");
+      s.normal = normalize(n);
+    }
+    sensors.push_back(s);
+  }
+  if (sensors.empty()) throw InputError("the sensor file '" + clipped(path) + "' holds no sensor");
+  return sensors;
+}
+
+AnalysisFiles write_analysis(const BakeResult& result, const std::string& folder, const std::string& name,
+                             const AnalysisOptions& options) {
+  AnalysisFiles out;
+  const double to_percent = options.daylight_factor_reference > 0 ? 100 / options.daylight_factor_reference : 0;
+  const std::vector<double>& lux = result.sensor_lux;
+  if (!result.sensors.empty()) {
+    std::ofstream csv(folder + "/sensors.csv");
+    csv << "x,y,z,nx,ny,nz,lux" << (to_percent > 0 ? ",daylight_factor_percent" : "") << "\n";
+    char row[256];
+    for (size_t k = 0; k < result.sensors.size(); ++k) {
+      const Sensor& s = result.sensors[k];
+      std::snprintf(row, sizeof row, "%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.6g", s.position.x, s.position.y, s.position.z,
+                    s.normal.x, s.normal.y, s.normal.z, lux[k]);
+      csv << row;
+      if (to_percent > 0) {
+        std::snprintf(row, sizeof row, ",%.6g", lux[k] * to_percent);
+        csv << row;
+      }
+      csv << "\n";
+    }
+    if (!csv) throw std::runtime_error("cannot write " + folder + "/sensors.csv");
+    out.files.push_back("sensors.csv");
+    // The listed sensors come first, the work plane's after them; each set has its own summary.
+    const std::vector<double> listed(lux.begin(), lux.end() - ptrdiff_t(result.work_plane.sensors.size()));
+    out.sensors = summarise(listed);
+    if (to_percent > 0) {
+      std::vector<double> percent(listed);
+      for (double& v : percent) v *= to_percent;
+      out.sensors_daylight_factor = summarise(percent);
+    }
+  }
+  const WorkPlane& plane = result.work_plane;
+  if (!plane.sensors.empty()) {
+    std::vector<double> readings;
+    for (int32_t k : plane.sensor_at)
+      if (k >= 0) readings.push_back(lux[size_t(k)]);
+    out.work_plane = summarise(readings);
+    FalseColourScale scale = options.scale;
+    scale.unit = "lx";
+    write_work_plane_map(folder + "/work_plane.png", plane, lux, scale);
+    out.files.push_back("work_plane.png");
+    if (to_percent > 0) {
+      std::vector<double> percent(lux);
+      for (double& v : percent) v *= to_percent;
+      for (double& v : readings) v *= to_percent;
+      out.work_plane_daylight_factor = summarise(readings);
+      scale.unit = "%";
+      write_work_plane_map(folder + "/work_plane_daylight_factor.png", plane, percent, scale);
+      out.files.push_back("work_plane_daylight_factor.png");
+    }
+  }
+  for (size_t v = 0; v < result.views.size(); ++v) {
+    const FisheyeImage& image = result.views[v];
+    const Glare& glare = result.glare[v];
+    out.views.push_back({options.views[v], glare});
+    const std::string exr = "view_" + std::to_string(v) + ".exr", png = "view_" + std::to_string(v) + ".png";
+    write_exr(folder + "/" + exr, grey_page(image.size, image.size, image.luminance));
+    FalseColourScale scale;
+    scale.logarithmic = true;
+    scale.decades = 4;
+    scale.unit = "cd/m2";
+    std::vector<float> values(image.luminance);
+    for (int y = 0; y < image.size; ++y)
+      for (int x = 0; x < image.size; ++x) {
+        Vec3 d;
+        double omega;
+        if (!fisheye_pixel(image, x, y, &d, &omega)) values[size_t(y) * size_t(image.size) + size_t(x)] = std::numeric_limits<float>::quiet_NaN();
+      }
+    write_false_colour(folder + "/" + png, values, image.size, image.size, scale, 1);
+    out.files.insert(out.files.end(), {exr, png});
+    // The same eye in perspective, for looking at.
+    const PerspectiveImage& flat = result.perspectives[v];
+    const std::string flat_exr = "view_" + std::to_string(v) + "_perspective.exr", flat_png = "view_" + std::to_string(v) + "_perspective.png";
+    write_exr(folder + "/" + flat_exr, grey_page(flat.width, flat.height, flat.luminance));
+    write_false_colour(folder + "/" + flat_png, flat.luminance, flat.width, flat.height, scale, 1);
+    out.files.insert(out.files.end(), {flat_exr, flat_png});
+  }
+  for (size_t p = 0; p < result.pages.size(); ++p) {
+    const LightmapPage& page = result.pages[p];
+    if (options.false_colour_pages) {
+      FalseColourScale scale = options.scale;
+      scale.unit = options.lightmap_is_irradiance ? "lx" : "lm/m2";
+      const std::string file = name + "_false_colour_" + std::to_string(p) + ".png";
+      write_page_map(folder + "/" + file, page, scale);
+      out.files.push_back(file);
+    }
+    if (to_percent > 0 && options.lightmap_is_irradiance) {
+      FalseColourScale scale = options.scale;
+      scale.unit = "%";
+      scale.max = 0;  // the lux scale's max means nothing in percent
+      const std::string file = name + "_daylight_factor_" + std::to_string(p) + ".png";
+      write_false_colour(folder + "/" + file, page_values(page, to_percent), page.width, page.height, scale, 1);
+      out.files.push_back(file);
+    }
+  }
+  return out;
+}
+
+}  // namespace radbake

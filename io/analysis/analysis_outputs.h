@@ -1,0 +1,66 @@
+// The lighting-analysis files a bake writes on request: the sensors' readings as CSV, the work
+// plane as a heat map, false-colour lightmap pages (lux, or daylight factor) with legends, and the
+// statistics report.json gives (min, mean, max, uniformity).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "baker/pipeline/bake_result.h"
+#include "io/analysis/false_colour.h"
+
+namespace radbake {
+
+struct AnalysisOptions {
+  bool false_colour_pages = false;  // NAME_false_colour_N.png: the stored quantity per texel
+  FalseColourScale scale;           // for the pages and the work plane (max 0: automatic each)
+  // The unobstructed sky's horizontal illuminance, lux: readings over it are daylight factors
+  // (CIE overcast sky). 0: no daylight factor.
+  double daylight_factor_reference = 0;
+  bool lightmap_is_irradiance = true;  // pages hold lux (else lm/m2: no daylight factor pages)
+  std::vector<EyeView> views;          // the bake's BakeOptions::views, for the report
+};
+
+struct ReadingSummary {
+  size_t count = 0;
+  double min = 0, mean = 0, max = 0;  // arithmetic mean over the points (a regular grid: the area mean)
+  double uniformity = 0;              // min / mean (EN 12464's U0), 0 when the mean is 0
+};
+
+ReadingSummary summarise(const std::vector<double>& values);
+
+struct ViewGlare {
+  EyeView eye;
+  Glare glare;
+};
+
+struct AnalysisFiles {
+  std::vector<std::string> files;  // written, relative to the folder
+  std::vector<ViewGlare> views;    // per BakeOptions::views
+  ReadingSummary sensors, work_plane;              // lux
+  ReadingSummary sensors_daylight_factor, work_plane_daylight_factor;  // percent, when asked
+};
+
+// Sensors from a CSV file: a line per point, "x,y,z" or "x,y,z,nx,ny,nz" in metres (the normal
+// defaults to +Y, up); an optional header line, blank lines and lines starting with '#' are
+// skipped. Throws InputError naming the file and line for anything else, and beyond max_points.
+std::vector<Sensor> read_sensor_csv(const std::string& path, size_t max_points = 1000000);
+
+// The work plane seen from above (-Z up, +X right) in false colour with a legend: `values` per
+// sensor, indexed as plane.sensor_at indexes them; cells where no floor is under a point are grey.
+void write_work_plane_map(const std::string& path, const WorkPlane& plane, const std::vector<double>& values,
+                          const FalseColourScale& scale);
+
+// A lightmap page in false colour with a legend: each written texel's value (mean of R, G, B),
+// the padding grey.
+void write_page_map(const std::string& path, const LightmapPage& page, const FalseColourScale& scale);
+
+// Writes into `folder`: sensors.csv (every sensor: position, normal, lux, and the daylight factor
+// in percent when asked), work_plane.png (and work_plane_daylight_factor.png) seen from above
+// with -Z up and +X right, NAME_false_colour_N.png and NAME_daylight_factor_N.png per page, and
+// per view view_N.exr (its fisheye luminance, cd/m2) and view_N.png (the same in false colour,
+// four decades), and view_N_perspective.exr and .png (the eye in perspective, 70 degrees across).
+AnalysisFiles write_analysis(const BakeResult& result, const std::string& folder, const std::string& name,
+                             const AnalysisOptions& options);
+
+}  // namespace radbake

@@ -1,0 +1,163 @@
+#include "io/run/checkpoint_folder.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "baker/sharing/byte_stream.h"
+#include "base/errors.h"
+#include "base/version.h"
+
+namespace radbake {
+namespace {
+
+constexpr char kMagic[8] = {'r', 'a', 'd', 'b', 'a', 'k', 'e', 'C'};
+constexpr uint32_t kVersion = 1;
+const char* kManifest = "checkpoint.json";
+
+// FNV-1a, 64 bits: a checksum against damage and a fingerprint of inputs, not a defence against
+// someone forging a file (a checkpoint is the user's own).
+struct Fnv {
+  uint64_t h = 1469598103934665603ull;
+  void add(const void* data, size_t n) {
+    const auto* p = static_cast<const uint8_t*>(data);
+    for (size_t i = 0; i < n; ++i) h = (h ^ p[i]) * 1099511628211ull;
+  }
+  void add(const std::string& s) {
+    add(s.data(), s.size());
+    add("\0", 1);
+  }
+};
+
+std::string hex(uint64_t v) {
+  char text[17];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(v));
+  return text;
+}
+
+struct Header {
+  char magic[8];
+  uint32_t version;
+  uint32_t name_size;
+  uint64_t fingerprint;
+  uint64_t payload_size;
+  uint64_t checksum;
+};
+
+}  // namespace
+
+uint64_t bake_fingerprint(const LoadedScene& loaded, const std::vector<std::pair<std::string, std::string>>& options) {
+  Fnv f;
+  f.add(std::string("radbake ") + kRadbakeVersion + " checkpoint");
+  for (const std::string_view part : scene_contents(loaded)) f.add(part.data(), part.size());
+  for (const auto& [name, value] : options) {
+    f.add(name);
+    f.add(value);
+  }
+  return f.h;
+}
+
+CheckpointFolder::CheckpointFolder(std::string folder, uint64_t fingerprint, std::string scene, bool owner)
+    : folder_(std::move(folder)), fingerprint_(fingerprint) {
+  namespace fs = std::filesystem;
+  if (!owner) return;
+  std::error_code error;
+  fs::create_directories(folder_, error);
+  if (!fs::is_directory(folder_)) throw InputError("checkpoint " + clipped(folder_) + ": cannot make the folder");
+  const fs::path manifest = fs::path(folder_) / kManifest;
+  if (fs::exists(manifest)) {
+    nlohmann::json m;
+    std::ifstream in(manifest);
+    try {
+      in >> m;
+    } catch (const std::exception&) {
+      throw InputError("checkpoint " + clipped(folder_) + ": " + kManifest + " is damaged");
+    }
+    if (!m.is_object() || m.value("fingerprint", "") != hex(fingerprint))
+      throw InputError("checkpoint " + clipped(folder_) + " was saved by a bake of another scene or other options (" +
+                       clipped(m.is_object() ? m.value("scene", "?") : "?") + "): use another folder");
+    return;
+  }
+  nlohmann::json m = {{"fingerprint", hex(fingerprint)}, {"scene", scene}, {"format", kVersion}};
+  const fs::path temporary = fs::path(folder_) / (std::string(kManifest) + ".partial");
+  std::ofstream(temporary) << m.dump(2) << "\n";
+  fs::rename(temporary, manifest, error);
+  if (error) throw InputError("checkpoint " + clipped(folder_) + ": cannot write " + kManifest);
+}
+
+std::string CheckpointFolder::file_of(const std::string& stage) const {
+  std::string name;
+  for (char c : stage) name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+  return (std::filesystem::path(folder_) / (name + ".stage")).string();
+}
+
+void CheckpointFolder::save(const std::string& stage, const Bytes& state) {
+  Fnv sum;
+  sum.add(state.data(), state.size());
+  Header h{};
+  std::memcpy(h.magic, kMagic, sizeof kMagic);
+  h.version = kVersion;
+  h.name_size = uint32_t(stage.size());
+  h.fingerprint = fingerprint_;
+  h.payload_size = state.size();
+  h.checksum = sum.h;
+  const std::string file = file_of(stage), temporary = file + ".partial." + std::to_string(::getpid());
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    out.write(reinterpret_cast<const char*>(&h), sizeof h);
+    out.write(stage.data(), std::streamsize(stage.size()));
+    out.write(reinterpret_cast<const char*>(state.data()), std::streamsize(state.size()));
+    if (!out.flush()) throw InputError("checkpoint " + clipped(file) + ": cannot write (disk full?)");
+  }
+  std::error_code error;
+  std::filesystem::rename(temporary, file, error);
+  if (error) throw InputError("checkpoint " + clipped(file) + ": cannot write");
+}
+
+std::optional<Bytes> CheckpointFolder::load(const std::string& stage) const {
+  const std::string file = file_of(stage);
+  std::error_code error;
+  const uintmax_t size = std::filesystem::file_size(file, error);
+  if (error) return std::nullopt;
+  auto damaged = [&](const std::string& why) { return InputError("checkpoint " + clipped(file) + " is damaged: " + why); };
+  Header h{};
+  std::ifstream in(file, std::ios::binary);
+  if (size < sizeof h || !in.read(reinterpret_cast<char*>(&h), sizeof h)) throw damaged("it is shorter than its header");
+  if (std::memcmp(h.magic, kMagic, sizeof kMagic) != 0 || h.version != kVersion)
+    throw damaged("it is not a radbake checkpoint file of this version");
+  if (h.fingerprint != fingerprint_)
+    throw InputError("checkpoint " + clipped(file) + " was saved by a bake of another scene or other options");
+  if (uintmax_t(h.name_size) + h.payload_size != size - sizeof h) throw damaged("its size is not what its header says");
+  std::string name(h.name_size, '\0');
+  Bytes payload(h.payload_size);
+  in.read(name.data(), std::streamsize(name.size()));
+  in.read(reinterpret_cast<char*>(payload.data()), std::streamsize(payload.size()));
+  if (!in || name != stage) throw damaged("it holds another stage");
+  Fnv sum;
+  sum.add(payload.data(), payload.size());
+  if (sum.h != h.checksum) throw damaged("its checksum does not match");
+  return payload;
+}
+
+std::vector<std::string> CheckpointFolder::stages(const std::string& prefix) const {
+  std::vector<std::string> out;
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(folder_, error)) {
+    if (entry.path().extension() != ".stage") continue;
+    std::ifstream in(entry.path(), std::ios::binary);
+    Header h{};
+    if (!in.read(reinterpret_cast<char*>(&h), sizeof h) || h.name_size > 4096) continue;
+    std::string name(h.name_size, '\0');
+    if (in.read(name.data(), std::streamsize(name.size())) && name.rfind(prefix, 0) == 0) out.push_back(name);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+}  // namespace radbake

@@ -1,0 +1,164 @@
+// Illuminance at points in the air (baker/readings/sensor_points.h), the work plane's grid
+// (baker/readings/work_plane.h) and per-surface statistics, against closed forms.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "support/closed_forms.h"
+#include "support/scene_builders.h"
+
+namespace radbake {
+namespace {
+
+AtlasOptions coarse() {
+  AtlasOptions atlas;
+  atlas.texel_density = 8;
+  return atlas;
+}
+
+// A sky of the same luminance (cd/m2) everywhere above the horizon, alone.
+BakeOptions under_a_uniform_sky(float luminance) {
+  BakeOptions options;
+  options.sky.enabled = true;
+  options.sky.distribution.model = SkyModel::Uniform;
+  options.sky.zenith_luminance = luminance;
+  return options;
+}
+
+TEST(Sensors, InTheOpenTheyReadTheSkyAndALampExactly) {
+  Scene scene;
+  const int grey = test::add_material(scene, {0.5f, 0.5f, 0.5f});
+  test::add_quad(scene, {0, 0, 4}, {4, 0, 0}, {0, 0, -4}, grey, "floor");
+  Light lamp;
+  lamp.intensity = 500;
+  lamp.position = {2, 3, 2};
+  scene.lights.push_back(lamp);
+  BakeOptions options = under_a_uniform_sky(1000);
+  options.sky.ground_reflectance = 0;
+  // Over the floor facing up, and beyond its edge facing back at it.
+  const Vec3 up_at{2.5f, 1, 2}, side_at{6, 1, 2};
+  options.sensors = {{up_at, {0, 1, 0}}, {side_at, {-1, 0, 0}}};
+  const BakeResult r = test::bake_scene(scene, coarse(), options).result;
+  ASSERT_EQ(r.sensor_lux.size(), 2u);
+  // Up: pi L from the sky, I cos / d^2 from the lamp; the floor is below it. 1e-4 bounds float
+  // rounding: the sky rays are unobstructed and the lamp's one ray is exact.
+  const double up = M_PI * 1000 + test::point_light_lux(500, lamp.position, up_at, {0, 1, 0});
+  EXPECT_NEAR(r.sensor_lux[0], up, 1e-4 * up);
+  // Sideways: the sky's upper half, pi L / 2, and the lamp, plus the lit floor seen below the
+  // horizon, which is less than a whole lower half of its exitance (rho (pi L + lamp) <= 0.5 x
+  // 3,200 lm/m2, half of that).
+  const double sky_and_lamp = M_PI * 1000 / 2 + test::point_light_lux(500, lamp.position, side_at, {-1, 0, 0});
+  EXPECT_GT(r.sensor_lux[1], sky_and_lamp + 10);
+  EXPECT_LT(r.sensor_lux[1], sky_and_lamp + 0.5 * 3200 / 2);
+}
+
+TEST(Sensors, AnEmittingSquareGivesPiLTimesTheFormFactorThroughTheGather) {
+  // CIE 171 5.3's room: a 1 m square of 1000 cd/m2 in a black 4 x 4 x 3 m room's ceiling. In the
+  // air the sensors see it through their cosine-distributed rays only.
+  Scene scene;
+  const int black = test::add_material(scene, {0, 0, 0});
+  const int source = test::add_material(scene, {0, 0, 0}, {1, 1, 1}, 1000);
+  test::add_box(scene, {0, 0, 0}, {4, 3, 4}, true, black, "room");
+  test::add_quad(scene, {1.5f, 2.999f, 1.5f}, {1, 0, 0}, {0, 0, 1}, source, "source");  // facing down
+  const std::vector<Vec3> corners = {{1.5f, 2.999f, 1.5f}, {2.5f, 2.999f, 1.5f}, {2.5f, 2.999f, 2.5f}, {1.5f, 2.999f, 2.5f}};
+  BakeOptions options;
+  options.sensor.rays = 65536;
+  for (float x : {0.5f, 1.25f, 2.0f, 3.0f}) options.sensors.push_back({{x, 0.8f, 2}, {0, 1, 0}});
+  const BakeResult r = test::bake_scene(scene, coarse(), options).result;
+  double worst = 0;
+  for (size_t k = 0; k < options.sensors.size(); ++k) {
+    const double expected = M_PI * 1000 * test::point_to_polygon(options.sensors[k].position, {0, 1, 0}, corners);
+    worst = std::max(worst, std::fabs(r.sensor_lux[k] / expected - 1));
+    // 3% bounds the gather's noise: 65,536 stratified rays, of which 1-10% strike the source.
+    EXPECT_NEAR(r.sensor_lux[k], expected, 0.03 * expected) << "at x = " << options.sensors[k].position.x;
+  }
+  RecordProperty("worst_relative_error", std::to_string(worst));
+}
+
+TEST(Sensors, JustAboveAFloorTheyReadWhatTheFloorsTexelsReceive) {
+  // The lit room: a sensor 1 mm over the floor sees what the floor does; the floor's texels there
+  // got their light from the bake's own gather, the sensor from its rays on the finished bake.
+  Scene scene = test::lit_room(0.6f, {1, 1, 1}, false);
+  BakeOptions options;
+  options.sensor.rays = 16384;
+  const Vec3 at{0.6f, 0.001f, 1.3f};
+  options.sensors = {{at, {0, 1, 0}}};
+  const BakeResult r = test::bake_scene(scene, coarse(), options).result;
+  const Rgb floor = test::mean_irradiance(r, [&](Vec3 p, Vec3 n) {
+    return n.y > 0.9f && p.y < 0.01f && std::fabs(p.x - at.x) < 0.07f && std::fabs(p.z - at.z) < 0.07f;
+  });
+  RecordProperty("sensor_over_floor", std::to_string(r.sensor_lux[0] / floor.x));
+  // 2% bounds both gathers' noise and the texels' footprint (12.5 cm) against one point.
+  EXPECT_NEAR(r.sensor_lux[0], floor.x, 0.02 * floor.x);
+}
+
+TEST(WorkPlane, AGridAtAHeightOverTheNamedFloorsOnly) {
+  Scene scene;
+  const int grey = test::add_material(scene, {0.5f, 0.5f, 0.5f});
+  test::add_quad(scene, {0, 0, 2}, {3, 0, 0}, {0, 0, -2}, grey, "classroom floor");  // 3 x 2 m at y = 0
+  test::add_quad(scene, {0, 0.75f, 1}, {1, 0, 0}, {0, 0, -1}, grey, "desk");          // a desk top over it
+  test::add_quad(scene, {5, 0.2f, 2}, {2, 0, 0}, {0, 0, -2}, grey, "terrace");        // elsewhere, higher
+  Light lamp;
+  lamp.intensity = 100;
+  lamp.position = {1.5f, 2.5f, 1};
+  scene.lights.push_back(lamp);
+  BakeOptions options;
+  options.work_plane.enabled = true;
+  options.work_plane.over = {"floor"};
+  options.work_plane.spacing = 0.5;
+  const BakeResult r = test::bake_scene(scene, coarse(), options).result;
+  const WorkPlane& plane = r.work_plane;
+  EXPECT_EQ(plane.columns, 6);
+  EXPECT_EQ(plane.rows, 4);
+  ASSERT_EQ(r.sensors.size(), 24u);
+  for (const Sensor& s : r.sensors) {
+    EXPECT_FLOAT_EQ(s.position.y, 0.8f);  // over the floor, not the desk: the lowest floor
+    EXPECT_LT(s.position.x, 3.0f);        // not over the terrace
+  }
+  // Without names: the lowest surface facing up under each point, the terrace's too.
+  options.work_plane.over.clear();
+  const BakeResult all = test::bake_scene(scene, coarse(), options).result;
+  size_t terrace = 0;
+  for (const Sensor& s : all.sensors) terrace += s.position.x > 4.9f && std::fabs(s.position.y - 1.0f) < 1e-5f;
+  EXPECT_EQ(terrace, 16u);  // 2 x 2 m at 0.5 m
+  // Facing up with nothing above but the lamp, each point reads I cos / d^2 (1e-4: float
+  // rounding; the floor and the desk top below the plane are behind the meter).
+  for (size_t k = 0; k < r.sensors.size(); ++k) {
+    const double lamp_lux = test::point_light_lux(100, lamp.position, r.sensors[k].position, {0, 1, 0});
+    EXPECT_NEAR(r.sensor_lux[k], lamp_lux, 1e-4 * lamp_lux);
+  }
+}
+
+TEST(WorkPlane, AtHeightZeroItIsNotShadedByTheFloorItLiesOn) {
+  Scene scene;
+  const int grey = test::add_material(scene, {0.5f, 0.5f, 0.5f});
+  test::add_quad(scene, {0, 0, 2}, {2, 0, 0}, {0, 0, -2}, grey, "floor");
+  BakeOptions options = under_a_uniform_sky(1000);
+  options.sky.rays = 64;
+  options.work_plane.enabled = true;
+  options.work_plane.height = 0;
+  const BakeResult r = test::bake_scene(scene, coarse(), options).result;
+  ASSERT_EQ(r.sensors.size(), 16u);
+  // pi L at every point: 1e-4 bounds float rounding; a ray stopped by the floor would take 1/64.
+  for (double lux : r.sensor_lux) EXPECT_NEAR(lux, M_PI * 1000, 1e-4 * M_PI * 1000);
+}
+
+TEST(SurfaceStatistics, PerInstanceAreaMeanAndUniformity) {
+  Scene scene;
+  const int grey = test::add_material(scene, {0.5f, 0.5f, 0.5f});
+  test::add_quad(scene, {0, 0, 2}, {2, 0, 0}, {0, 0, -2}, grey, "terrace");
+  BakeOptions options = under_a_uniform_sky(1000);
+  options.sky.rays = 16;
+  const BakeResult r = test::bake_scene(scene, coarse(), options).result;
+  ASSERT_EQ(r.report.surfaces.size(), 1u);
+  const SurfaceStatistics& s = r.report.surfaces[0];
+  EXPECT_EQ(s.name, "terrace");
+  EXPECT_NEAR(s.area, 4, 1e-3);
+  // Open to a uniform sky: pi L everywhere, so uniformity 1 (1e-5: float rounding).
+  EXPECT_NEAR(s.mean, M_PI * 1000, 1e-5 * M_PI * 1000);
+  EXPECT_NEAR(s.min, s.max, 1e-5 * s.max);
+  EXPECT_NEAR(s.uniformity, 1, 1e-5);
+}
+
+}  // namespace
+}  // namespace radbake
