@@ -243,7 +243,7 @@ OptionGroup<B> output_group() {
   };
   Option<B> exposure = number_or_auto<B>("--exposure", "X|auto", 1e-30, 1e30, "per cd/m2", FIELD(display.exposure.exposure),
                                          "display value per cd/m2 for the display file and the three.js plugin");
-  exposure.default_note = "the log-mean luminance shows at --key";
+  exposure.default_note = "the median lit surface shows at --key, unless more than 2% of the lit area would clip";
   Option<B> color_0 = choice<B>("--color-0", "WHAT",
                                 std::vector<std::pair<std::string, Color0>>{
                                     {"source", Color0::Source}, {"light", Color0::Light}, {"prelit", Color0::Prelit}},

@@ -82,9 +82,7 @@ radbake::DisplaySummary write_display(const radbake::BakeCommand& cmd, const rad
                                            sh ? &result.directional : nullptr, cmd.bake.emission_scale, irradiance,
                                            cmd.display);
   DisplaySummary summary;
-  summary.exposure = light.exposure.exposure;
-  summary.exposure_automatic = light.exposure.automatic;
-  summary.log_mean_luminance = light.exposure.log_mean_luminance;
+  summary.exposure = light.exposure;
   if (cmd.display.mode == DisplayMode::None) return summary;
   const bool vertex_lit = cmd.display.mode == DisplayMode::Vertex;
   if (vertex_lit)
@@ -320,7 +318,7 @@ int run_bake(const radbake::BakeCommand& cmd, radbake::Team& team) {
   }
   stop_if_interrupted();
   run.display = write_display(cmd, loaded.scene, atlas, result, folder.path(), name);
-  engine.display_exposure = run.display.exposure;
+  engine.display_exposure = run.display.exposure.exposure;
   engine.display_file = run.display.file;
   stop_if_interrupted();
   GltfOutput gltf = write_gltf(*loaded.source, loaded.scene, atlas, result.vertex_values, files, folder.path(), name, engine);

@@ -27,6 +27,12 @@ namespace {
 constexpr double kChartsEnd = 0.6, kPackingEnd = 0.95;
 // Packing attempts: one, or a search for the automatic density (below).
 constexpr int kMostPackings = 48;
+// The share of its page the automatic density fills (of the page's texels, charts' bounding
+// rectangles counted whole): the packer leaves about this much once the page is nearly full.
+constexpr double kFilledShare = 0.8;
+// A page holds the texel budget when this share of it fits: charts carry a border of padding and
+// partly covered texels, so a budget that is most of a page's area misses it by a little.
+constexpr double kBudgetHeld = 0.9;
 
 double world_area(const MeshView& mesh) {
   double area = 0;
@@ -234,31 +240,30 @@ Atlas ensure_lightmap_uvs(const std::vector<MeshView>& meshes, const AtlasOption
   std::vector<Chart> charts = make_charts(meshes, generate, options, density, &seam_length, progress);
 
   int packings = 0;
-  auto pack = [&](float d, PackGoal goal) {
+  const AtlasPage largest_page{page_size, page_size};
+  auto pack = [&](float d, PackGoal goal, AtlasPage page) {
     const double share = (kPackingEnd - kChartsEnd) / kMostPackings;
     progress.step(kChartsEnd + share * packings, kChartsEnd + share * (packings + 1));
     packings = std::min(packings + 1, kMostPackings - 1);
-    return pack_charts(charts, meshes.size(), d, page_size, options.padding, options.rotate_charts, goal, progress);
+    return pack_charts(charts, meshes.size(), d, page, options.padding, options.rotate_charts, goal, progress);
   };
   auto fits = [](const PackResult& r) { return r.pages.size() == 1 && r.downscaled_meshes.empty(); };
+  // The highest density up to `cap` whose charts fit one `page`, into `packed`; false when none
+  // does. A bracket round the first try, then narrowed to 0.1%. Each try guesses from the last:
+  // a page filled to a share f suggests sqrt(1/f) times the density, charts placed up to a share
+  // p before one did not fit suggest sqrt(p) times; guesses stay inside the bracket, and halve it
+  // when they would not shrink it.
   PackResult packed;
-  if (charts.empty() || (options.texel_density > 0 && !options.fit_one_page)) {
-    packed = pack(density, PackGoal::AsManyPagesAsNeeded);
-  } else {
-    // The highest density that fits one page, up to the cap: a bracket round the first try, then
-    // narrowed to 0.1%. Each try guesses from the last: a page filled to a share f suggests
-    // sqrt(1/f) times the density, charts placed up to a share p before one did not fit suggest
-    // sqrt(p) times; guesses stay inside the bracket, and halve it when they would not shrink it.
-    const float cap = options.texel_density > 0 ? options.texel_density : budget_density;
+  auto most_that_fits = [&](AtlasPage page, float first, float cap) {
     float lo = 0, hi = 0;  // highest known to fit, lowest known not to
     PackResult best;
-    float next = density;
+    float next = std::min(first, cap);
     for (int step = 0; step < 40; ++step) {
       const float d = next;
-      PackResult r = pack(d, PackGoal::OnePageOrNothing);
+      PackResult r = pack(d, PackGoal::OnePageOrNothing, page);
       float guess;
       if (fits(r)) {
-        const double filled = double(r.pages[0].width) * r.pages[0].height / (double(page_size) * page_size);
+        const double filled = double(r.pages[0].width) * r.pages[0].height / (double(page.width) * page.height);
         guess = d * float(std::sqrt(1 / std::max(filled, 0.25)));
         lo = d, best = std::move(r);
         if (lo >= cap) break;
@@ -271,23 +276,49 @@ Atlas ensure_lightmap_uvs(const std::vector<MeshView>& meshes, const AtlasOption
       else if (lo == 0) next = std::min(guess, hi * 0.95f);
       else next = guess > lo + 0.25f * (hi - lo) && guess < hi - 0.25f * (hi - lo) ? guess : 0.5f * (lo + hi);
     }
-    if (lo > 0) {
-      density = lo;
-      packed = std::move(best);
-      atlas.density_lowered = options.texel_density > 0 && density < options.texel_density;
-      if (atlas.density_lowered)
-        atlas.warnings.push_back("the density was lowered from " + std::to_string(options.texel_density) + " to " +
-                                 std::to_string(density) + " texels/m to fit one page");
-    } else {
-      packed = pack(density, PackGoal::AsManyPagesAsNeeded);
-      atlas.warnings.push_back("the charts do not fit one " + std::to_string(page_size) +
-                               "-texel page at any density; using " + std::to_string(packed.pages.size()) + " pages");
-    }
+    if (lo == 0) return false;
+    density = lo;
+    packed = std::move(best);
+    return true;
+  };
+  // The automatic density on power-of-two pages: the smallest page, square or twice as wide as
+  // high, that holds the texel budget, then filled to kFilledShare of it (engines allocate the
+  // whole page, so a budget on a page twice its size is half empty: the Cornell box's 50,000
+  // texels were 39% of a 1024 x 128 page). A scene gets from 90% to about twice the budget.
+  AtlasPage smallest_holding_budget{0, 0};
+  if (options.texel_density == 0 && !options.any_page_size && !charts.empty())
+    for (int side = 16; side <= page_size && smallest_holding_budget.width == 0; side *= 2)
+      for (AtlasPage page : {AtlasPage{side, side / 2}, AtlasPage{side, side}}) {
+        if (page.height < 16 || double(page.width) * page.height < kBudgetHeld * double(options.automatic_texels)) continue;
+        if (fits(pack(budget_density * float(std::sqrt(kBudgetHeld)), PackGoal::OnePageOrNothing, page))) {
+          smallest_holding_budget = page;
+          break;
+        }
+      }
+  if (smallest_holding_budget.width > 0) {
+    const double fill_texels = std::max(double(options.automatic_texels),
+                                        kFilledShare * smallest_holding_budget.width * smallest_holding_budget.height);
+    const float fill_density = float(std::sqrt(fill_texels / std::max(total_area, 1e-12)));
+    most_that_fits(smallest_holding_budget, fill_density, fill_density);
+  } else if (charts.empty() || (options.texel_density > 0 && !options.fit_one_page)) {
+    packed = pack(density, PackGoal::AsManyPagesAsNeeded, largest_page);
+  } else if (!most_that_fits(largest_page, density, options.texel_density > 0 ? options.texel_density : budget_density)) {
+    packed = pack(density, PackGoal::AsManyPagesAsNeeded, largest_page);
+    atlas.warnings.push_back("the charts do not fit one " + std::to_string(page_size) +
+                             "-texel page at any density; using " + std::to_string(packed.pages.size()) + " pages");
   }
+  atlas.density_lowered = options.texel_density > 0 && density < options.texel_density;
+  if (atlas.density_lowered)
+    atlas.warnings.push_back("the density was lowered from " + std::to_string(options.texel_density) + " to " +
+                             std::to_string(density) + " texels/m to fit one page");
   atlas.texel_density = density;
-  char choice[200];
+  char choice[240];
   if (options.texel_density > 0)
     std::snprintf(choice, sizeof choice, atlas.density_lowered ? "given, lowered to fit one page" : "given");
+  else if (smallest_holding_budget.width > 0)
+    std::snprintf(choice, sizeof choice,
+                  "automatic: %dx%d, the smallest power-of-two page that holds %zu texels over %.3g m2 of surface, filled",
+                  smallest_holding_budget.width, smallest_holding_budget.height, options.automatic_texels, total_area);
   else if (density >= budget_density * 0.999f)
     std::snprintf(choice, sizeof choice, "automatic: %zu texels over %.3g m2 of surface", options.automatic_texels, total_area);
   else

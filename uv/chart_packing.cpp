@@ -80,7 +80,15 @@ struct Spot {
 // far, grown by the padding. A new chart fits where none of its own texels is blocked, so it can
 // go anywhere there is room: inside a ring-shaped chart, under an overhang, between two others.
 struct Page {
-  explicit Page(int size) : blocked(size), free_run(size_t(size), size) {}
+  // The bitmap is square, the page's longer side; texels outside width x height start taken.
+  Page(int width, int height)
+      : width(width), height(height), blocked(std::max(width, height)), free_run(size_t(blocked.size()), width) {
+    for (int y = 0; y < blocked.size(); ++y) {
+      if (y >= height) blocked.take(y, 0, blocked.size() - 1), free_run[size_t(y)] = 0;
+      else if (width < blocked.size()) blocked.take(y, width, blocked.size() - 1);
+    }
+  }
+  int width, height;
   PageBitmap blocked;
   std::vector<int> free_run;  // per row, its longest run of free texels
   // Per shape, where it was last placed: texels only get blocked, so no spot before it fits it.
@@ -93,7 +101,7 @@ struct Page {
 // row y, or -1. Every x of the row is tried at once, as a bitmask narrowed span by span, widest row
 // first, until one is left or none.
 int fit_in_row(Page& page, const Footprint& fp, int y, int x) {
-  const int last_x = page.blocked.size() - fp.width;
+  const int last_x = page.width - fp.width;
   if (x > last_x) return -1;
   for (int r : fp.widest_first)
     if (fp.widest[size_t(r)] > page.free_run[size_t(y + r)]) return -1;
@@ -129,7 +137,7 @@ int lowest_turn(Page& page, const Footprint* shapes, int turns, Spot& at) {
   int last_row[2] = {-1, -1}, best = -1;
   for (int t = 0; t < turns; ++t) {
     start[t] = search_start(page, shapes[t]);
-    last_row[t] = page.blocked.size() - shapes[t].height;
+    last_row[t] = page.height - shapes[t].height;
   }
   for (int y = std::min(start[0].y, turns > 1 ? start[1].y : INT_MAX); y <= std::max(last_row[0], last_row[1]); ++y)
     for (int t = 0; t < turns; ++t) {
@@ -143,12 +151,11 @@ int lowest_turn(Page& page, const Footprint* shapes, int turns, Spot& at) {
 }
 
 void settle(Page& page, const Footprint& fp, Spot at, int padding) {
-  const int size = page.blocked.size();
   for (int r = 0; r < fp.height; ++r)
     for (int s = fp.row_start[size_t(r)]; s < fp.row_start[size_t(r) + 1]; ++s)
       for (int d = -padding; d <= padding; ++d)
         page.blocked.take(at.y + r + d, at.x + fp.spans[size_t(s)].first - padding, at.x + fp.spans[size_t(s)].second + padding);
-  for (int y = std::max(0, at.y - padding); y < std::min(size, at.y + fp.height + padding); ++y)
+  for (int y = std::max(0, at.y - padding); y < std::min(page.height, at.y + fp.height + padding); ++y)
     page.free_run[size_t(y)] = page.blocked.longest_free_run(y);
   page.resume[fp.shape] = at;
   page.used_w = std::max(page.used_w, at.x + fp.width);
@@ -170,7 +177,7 @@ Vec2 placed_corner(const Chart& chart, const ChartPlacement& at, size_t corner) 
   return turned(chart.corner_uv[corner] * at.scale, extent, at.quarter_turns) + shift + Vec2{float(at.x), float(at.y)};
 }
 
-PackResult pack_charts(const std::vector<Chart>& charts, size_t mesh_count, float texel_density, int page_size,
+PackResult pack_charts(const std::vector<Chart>& charts, size_t mesh_count, float texel_density, AtlasPage page_size,
                        int padding, bool may_rotate, PackGoal goal, UnwrapProgress& progress) {
   PackResult result;
   result.placements.assign(charts.size(), ChartPlacement{});
@@ -188,7 +195,7 @@ PackResult pack_charts(const std::vector<Chart>& charts, size_t mesh_count, floa
       largest = std::max({largest, e.x, e.y});
       mesh_area[m] += double(e.x) * e.y;
     }
-    float limit = float(page_size - 2 * padding - 2);
+    float limit = float(std::min(page_size.width, page_size.height) - 2 * padding - 2);
     if (largest * texel_density > limit) {
       mesh_scale[m] = limit / largest;
       result.downscaled_meshes.push_back(uint32_t(m));
@@ -248,7 +255,7 @@ PackResult pack_charts(const std::vector<Chart>& charts, size_t mesh_count, floa
   largest_first(all);
   for (size_t c : all) total_area += extent_area(c);
   if (charts.empty()) return result;
-  std::vector<Page> pages(1, Page(page_size));
+  std::vector<Page> pages(1, Page(page_size.width, page_size.height));
   bool on_one_page = place_on(pages[0], 0, all);
   const double largest_first_share = placed_area / total_area;
   if (!on_one_page && charts.size() <= kFewCharts) {
@@ -274,7 +281,7 @@ PackResult pack_charts(const std::vector<Chart>& charts, size_t mesh_count, floa
       for (size_t p = 0; p < pages.size() && !placed; ++p) placed = place_on(pages[p], int(p), order);
       // Not even an empty page holds the mesh at this scale: it shrinks until one does.
       for (bool shrunk = false; !placed; shrunk = true) {
-        Page empty(page_size);
+        Page empty(page_size.width, page_size.height);
         if (place_on(empty, int(pages.size()), order)) {
           pages.push_back(std::move(empty));
           placed = true;
@@ -288,7 +295,8 @@ PackResult pack_charts(const std::vector<Chart>& charts, size_t mesh_count, floa
   }
   for (size_t c = 0; c < charts.size(); ++c) result.placements[c].scale = mesh_scale[charts[c].mesh];
   for (const Page& p : pages)
-    result.pages.push_back({std::min(page_size, round_up4(p.used_w + padding)), std::min(page_size, round_up4(p.used_h + padding))});
+    result.pages.push_back({std::min(page_size.width, round_up4(p.used_w + padding)),
+                            std::min(page_size.height, round_up4(p.used_h + padding))});
   return result;
 }
 

@@ -89,10 +89,11 @@ enum class PackGoal {
 };
 
 // Packs charts into pages of at most page_size texels, keeping all charts of one mesh on one page.
+// Pages are trimmed to what they use, to a multiple of 4.
 // Each chart is rasterised to the texels it covers and goes, largest first, to the lowest, then
 // leftmost, spot where none of them comes closer than `padding` texels to another chart's: inside
 // a ring-shaped chart, under an overhang, anywhere there is room (uv/chart_packing.cpp).
-PackResult pack_charts(const std::vector<Chart>& charts, size_t mesh_count, float texel_density, int page_size,
+PackResult pack_charts(const std::vector<Chart>& charts, size_t mesh_count, float texel_density, AtlasPage page_size,
                        int padding, bool may_rotate, PackGoal goal, UnwrapProgress& progress);
 
 // Where corner k of chart triangle i lands in the page, in texels.

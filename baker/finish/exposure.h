@@ -1,8 +1,15 @@
 // How scene luminance (cd/m2) becomes a display value in [0, 1]: one linear factor for the whole
-// scene, chosen as a photographer's meter would (Reinhard et al. 2002, "Photographic tone
-// reproduction": the log-mean luminance maps to the key value, middle grey), or set by the user.
+// scene, chosen as a spot meter would on what is lit, or set by the user.
+//
+// The meter reads the lit surface only. A log-mean over every texel (Reinhard et al. 2002) is
+// dragged down by texels no light reaches (the inside of a CAD part, the floor under a block),
+// which then sets the exposure so high that everything lit shows white: 2CylinderEngine under one
+// lamp had 14% of its texels at exactly 0 and 80% of its pixels clipped. So the median of the lit
+// area is placed at the key value, unless that would clip more than a small share of the lit
+// area's brightest channel, in which case the highlights set it.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "baker/finish/finish.h"
@@ -10,14 +17,23 @@
 namespace radbake {
 
 struct ExposureOptions {
-  float exposure = 0;  // display units per cd/m2; 0: automatic from the key value
-  float key = 0.18f;   // display value (linear) the log-mean luminance is shown at
+  float exposure = 0;  // display units per cd/m2; 0: automatic, metered as below
+  float key = 0.18f;   // display value (linear) the median lit luminance is shown at (mid-grey)
+  // Automatic: at most this share of the lit area shows any channel clipped (at 1).
+  float max_clipped_share = 0.02f;
 };
 
 struct Exposure {
-  float exposure = 1;               // displayed linear value = luminance in cd/m2 * exposure
-  double log_mean_luminance = 0;    // cd/m2, over the covered texels
+  float exposure = 1;                 // displayed linear value = luminance in cd/m2 * exposure
   bool automatic = true;
+  // What the meter read, over covered texels (each counts once: generated charts share one
+  // density, so this weights by surface area). Lit: brighter than 1/1000 of the highlights
+  // (the covered area's 99th percentile), ten stops down, black on any display.
+  double lit_share = 0;               // of the covered area
+  double median_lit_luminance = 0;    // cd/m2
+  double highlight_channel = 0;       // cd/m2: the lit area's (1 - max_clipped_share) quantile of max(R, G, B)
+  bool limited_by_highlights = false; // the key would have clipped more than max_clipped_share
+  std::string method;                 // how the exposure was chosen, one sentence for the report
 };
 
 // `luminance`: pages in cd/m2 whose `valid` marks texels on a surface; only those are metered.

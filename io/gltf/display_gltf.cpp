@@ -216,7 +216,8 @@ class DisplayWriter {
         {"display", "linear display value = luminance * display_exposure, clipped to 1, sRGB-encoded"},
         {"display_exposure", in_.exposure.exposure},
         {"exposure_automatic", in_.exposure.automatic},
-        {"log_mean_luminance", in_.exposure.log_mean_luminance},
+        {"exposure_method", in_.exposure.method},
+        {"median_lit_luminance", in_.exposure.median_lit_luminance},
     };
     if (!in_.vertex_lit) info["prelit_detail"] = in_.pages->detail;
     doc_["extras"] = {{"radbake", info}};

@@ -109,9 +109,12 @@ void write_report(const std::string& path, const RunInfo& run, const Scene& scen
   for (const auto& [triangles, rms] : d.refinement) refinement.push_back({{"triangles", triangles}, {"rms_relative", rms}});
   json display = {{"file", d.file.empty() ? json(nullptr) : json(d.file)},
                   {"shows", d.shows},
-                  {"exposure_per_cd_m2", d.exposure},
-                  {"exposure_automatic", d.exposure_automatic},
-                  {"log_mean_luminance_cd_m2", d.log_mean_luminance},
+                  {"exposure_per_cd_m2", d.exposure.exposure},
+                  {"exposure_automatic", d.exposure.automatic},
+                  {"exposure_method", d.exposure.method},
+                  {"lit_share", d.exposure.lit_share},
+                  {"median_lit_luminance_cd_m2", d.exposure.median_lit_luminance},
+                  {"highlight_channel_cd_m2", d.exposure.highlight_channel},
                   {"triangles", d.triangles}};
   if (d.prelit_detail > 0) display["prelit_detail"] = d.prelit_detail;
   if (!refinement.empty()) display["vertex_light_vs_lightmap"] = refinement;

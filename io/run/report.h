@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "baker/finish/exposure.h"
 #include "baker/pipeline/bake_result.h"
 #include "daylight/daylight_sky.h"
 #include "io/analysis/analysis_outputs.h"
@@ -18,9 +19,7 @@ struct DisplaySummary {
   std::string file;  // empty: none written
   std::string shows; // "pre-lit pages" or "vertex light"
   int prelit_detail = 0;
-  float exposure = 0;             // display units per cd/m2
-  bool exposure_automatic = true;
-  double log_mean_luminance = 0;  // cd/m2
+  Exposure exposure;              // what both files record, and how it was metered
   size_t triangles = 0;
   // Vertex light against the lightmap as the mesh is refined: (triangles, area-weighted RMS
   // difference relative to the mean light).

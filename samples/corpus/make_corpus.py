@@ -1,0 +1,208 @@
+#!/usr/bin/env python3
+"""Makes the real-scene corpus: models nobody here wrote, as users bring them.
+
+usage: make_corpus.py OUTPUT_FOLDER
+
+Every scene comes from a Debian package that ./dev installs (assimp-testmodels, converted to glTF
+2.0 by assimp-utils' `assimp export`). Where a model has no light, one is added, always the
+same way (add_light below), and said so in OUTPUT_FOLDER/corpus.json, which the tests and
+./dev bench-real read. Nothing of the models is kept in this repository: the script rebuilds the
+corpus from the packages. samples/corpus/README.md says where each came from and its licence.
+"""
+import json
+import math
+import os
+import shutil
+import struct
+import subprocess
+import sys
+
+MODELS = "/usr/share/assimp/models"
+
+# name: (what it stands for, source file, the light added)
+SCENES = {
+    "fzk_haus": ("architecture: KIT's two-storey sample house, IFC", "IFC/AC14-FZK-Haus.ifc", "sun"),
+    "cylinder_engine": ("CAD: a two-cylinder engine, 82 parts", "glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb",
+                        "lamp"),
+    "teapots": ("kit-bashed props: one teapot instanced by COLLADA instance nodes", "Collada/teapot_instancenodes.DAE", "lamp"),
+    "milk_truck": ("a vehicle: Cesium's milk truck, glTF 1.0, textured", "glTF/CesiumMilkTruck/CesiumMilkTruck.gltf", "sun"),
+    "duck": ("a textured game asset: the COLLADA duck", "Collada/duck.dae", "lamp"),
+}
+
+# Added lights. The sun: 60,000 lx (a clear day's direct normal illuminance in the CIE 171 range)
+# from 35 degrees up in the south-west, so it enters a building's windows. The lamp: a point light
+# above and in front of the model at 1.5 bounding-box diagonals from its centre, giving 300 lx there.
+SUN_LUX = 60000.0
+SUN_ELEVATION, SUN_AZIMUTH = math.radians(35), math.radians(225)  # azimuth from north (-Z) through east (+X)
+LAMP_LUX_AT_CENTRE = 300.0
+
+
+def read_gltf(path):
+    """(json, bin bytes or None) of a .gltf or .glb."""
+    with open(path, "rb") as f:
+        data = f.read()
+    if data[:4] != b"glTF":
+        return json.loads(data), None
+    length = struct.unpack_from("<I", data, 8)[0]
+    offset, doc, binary = 12, None, None
+    while offset < length:
+        size, kind = struct.unpack_from("<II", data, offset)
+        chunk = data[offset + 8:offset + 8 + size]
+        if kind == 0x4E4F534A:
+            doc = json.loads(chunk)
+        elif kind == 0x004E4942:
+            binary = chunk
+        offset += 8 + size
+    return doc, binary
+
+
+def write_glb(path, doc, binary):
+    text = json.dumps(doc, separators=(",", ":")).encode()
+    text += b" " * (-len(text) % 4)
+    binary = binary + b"\0" * (-len(binary) % 4)
+    total = 12 + 8 + len(text) + 8 + len(binary)
+    with open(path, "wb") as f:
+        f.write(struct.pack("<III", 0x46546C67, 2, total))
+        f.write(struct.pack("<II", len(text), 0x4E4F534A) + text)
+        f.write(struct.pack("<II", len(binary), 0x004E4942) + binary)
+
+
+def mat_mul(a, b):  # column-major 4x4
+    return [sum(a[k * 4 + r] * b[c * 4 + k] for k in range(4)) for c in range(4) for r in range(4)]
+
+
+def node_matrix(node):
+    if "matrix" in node:
+        return node["matrix"]
+    tx, ty, tz = node.get("translation", [0, 0, 0])
+    x, y, z, w = node.get("rotation", [0, 0, 0, 1])
+    sx, sy, sz = node.get("scale", [1, 1, 1])
+    r = [1 - 2 * (y * y + z * z), 2 * (x * y + z * w), 2 * (x * z - y * w),
+         2 * (x * y - z * w), 1 - 2 * (x * x + z * z), 2 * (y * z + x * w),
+         2 * (x * z + y * w), 2 * (y * z - x * w), 1 - 2 * (x * x + y * y)]
+    return [r[0] * sx, r[1] * sx, r[2] * sx, 0, r[3] * sy, r[4] * sy, r[5] * sy, 0,
+            r[6] * sz, r[7] * sz, r[8] * sz, 0, tx, ty, tz, 1]
+
+
+def world_bounds(doc):
+    """World-space box of the default scene, from each mesh's POSITION min/max corners."""
+    lo, hi = [math.inf] * 3, [-math.inf] * 3
+    scene = doc.get("scenes", [{}])[doc.get("scene", 0)]
+
+    def walk(index, parent):
+        node = doc["nodes"][index]
+        m = mat_mul(parent, node_matrix(node))
+        if "mesh" in node:
+            for p in doc["meshes"][node["mesh"]]["primitives"]:
+                a = doc["accessors"][p["attributes"]["POSITION"]]
+                for corner in range(8):
+                    v = [a["max"][i] if corner >> i & 1 else a["min"][i] for i in range(3)]
+                    w = [m[r] * v[0] + m[4 + r] * v[1] + m[8 + r] * v[2] + m[12 + r] for r in range(3)]
+                    for i in range(3):
+                        lo[i], hi[i] = min(lo[i], w[i]), max(hi[i], w[i])
+        for child in node.get("children", []):
+            walk(child, m)
+
+    for root in scene.get("nodes", []):
+        walk(root, [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1])
+    return lo, hi
+
+
+def look_rotation(direction):
+    """Quaternion turning a light's -Z onto `direction` (unit)."""
+    dx, dy, dz = direction
+    ax, ay, az = -dy, dx, 0.0  # (0, 0, -1) x direction
+    w = 1 - dz  # 1 + cos of the angle between them
+    if w < 1e-9:
+        return [0, 1, 0, 0]
+    n = math.sqrt(ax * ax + ay * ay + az * az + w * w)
+    return [ax / n, ay / n, az / n, w / n]
+
+
+def add_light(doc, kind):
+    """Adds one KHR_lights_punctual light (see SUN_*, LAMP_*); returns its description."""
+    lo, hi = world_bounds(doc)
+    centre = [(a + b) / 2 for a, b in zip(lo, hi)]
+    diagonal = math.dist(lo, hi)
+    if kind == "sun":
+        towards_sun = [math.cos(SUN_ELEVATION) * math.sin(SUN_AZIMUTH), math.sin(SUN_ELEVATION),
+                       -math.cos(SUN_ELEVATION) * math.cos(SUN_AZIMUTH)]
+        light = {"name": "added sun", "type": "directional", "intensity": SUN_LUX}
+        node = {"name": "added sun", "rotation": look_rotation([-c for c in towards_sun])}
+        said = f"directional sun, {SUN_LUX:g} lx, 35 degrees up in the south-west"
+    else:
+        distance = 1.5 * diagonal
+        position = [centre[0] + 0.5 * distance, centre[1] + 0.7 * distance, centre[2] + 0.5 * distance]
+        distance = math.dist(position, centre)
+        light = {"name": "added lamp", "type": "point", "intensity": LAMP_LUX_AT_CENTRE * distance * distance}
+        node = {"name": "added lamp", "translation": position}
+        said = f"point lamp, {light['intensity']:.4g} cd, {distance:.3g} m from the model's centre ({LAMP_LUX_AT_CENTRE:g} lx there)"
+    lights = doc.setdefault("extensions", {}).setdefault("KHR_lights_punctual", {}).setdefault("lights", [])
+    node["extensions"] = {"KHR_lights_punctual": {"light": len(lights)}}
+    lights.append(light)
+    doc.setdefault("nodes", []).append(node)
+    doc["scenes"][doc.get("scene", 0)].setdefault("nodes", []).append(len(doc["nodes"]) - 1)
+    used = doc.setdefault("extensionsUsed", [])
+    if "KHR_lights_punctual" not in used:
+        used.append("KHR_lights_punctual")
+    return said, {"min": lo, "max": hi}
+
+
+def assimp_version():
+    r = subprocess.run(["assimp", "version"], capture_output=True, text=True)
+    for line in r.stdout.splitlines():
+        if "Version" in line:
+            return line.strip()
+    return "unknown"
+
+
+def make(name, source, light, folder):
+    """Converts (or copies) one model into folder/name/ and adds its light."""
+    out = os.path.join(folder, name)
+    shutil.rmtree(out, ignore_errors=True)
+    os.makedirs(out)
+    src = os.path.join(MODELS, source)
+    if source.endswith(".glb"):
+        doc, binary = read_gltf(src)
+        said, bounds = add_light(doc, light)
+        path = os.path.join(out, name + ".glb")
+        write_glb(path, doc, binary)
+        return path, said, bounds, "copied"
+    converted = os.path.join(out, name + ".gltf")
+    r = subprocess.run(["assimp", "export", src, converted, "-f", "gltf2"], capture_output=True, text=True)
+    if r.returncode != 0 or not os.path.exists(converted):
+        sys.exit(f"make_corpus: assimp could not convert {src}: {(r.stderr or r.stdout).strip().splitlines()[-1:]}")
+    with open(converted) as f:
+        doc = json.load(f)
+    # Images the model names sit next to its source; the converted file names them relatively.
+    for image in doc.get("images", []):
+        uri = image.get("uri", "")
+        if uri and not uri.startswith("data:") and not os.path.exists(os.path.join(out, uri)):
+            found = os.path.join(os.path.dirname(src), uri)
+            if os.path.exists(found):
+                shutil.copy(found, os.path.join(out, os.path.basename(uri)))
+                image["uri"] = os.path.basename(uri)
+    said, bounds = add_light(doc, light)
+    with open(converted, "w") as f:
+        json.dump(doc, f, indent=1)
+    return converted, said, bounds, "converted by " + assimp_version()
+
+
+def main():
+    if len(sys.argv) != 2:
+        sys.exit(__doc__)
+    folder = os.path.abspath(sys.argv[1])
+    os.makedirs(folder, exist_ok=True)
+    manifest = []
+    for name, (kind, source, light) in SCENES.items():
+        path, said, bounds, how = make(name, source, light, folder)
+        manifest.append({"name": name, "kind": kind, "file": os.path.relpath(path, folder),
+                         "source": "assimp-testmodels: " + source, "made": how, "light_added": said,
+                         "bounds_m": bounds})
+    with open(os.path.join(folder, "corpus.json"), "w") as f:
+        json.dump({"scenes": manifest}, f, indent=1)
+    print(f"make_corpus: {len(manifest)} scenes in {folder}")
+
+
+if __name__ == "__main__":
+    main()
