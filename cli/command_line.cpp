@@ -501,7 +501,7 @@ OptionGroup<B> daylight_group() {
 OptionGroup<B> analysis_group() {
   Option<B> over = row<B>("--work-plane-over", "NAMES",
       "the floors, by node name (comma-separated parts of names)");
-  over.default_note = "default: under each point, the lowest surface facing up";
+  over.default_note = "default: every surface facing up; in each storey the lowest under each point";
   over.show_default = false;
   over.set = [](B& b, const std::string& v) {
     std::vector<std::string>& names = b.bake.work_plane.over;
@@ -558,14 +558,18 @@ OptionGroup<B> analysis_group() {
   };
   return {"analysis options (bake): readings where there is no surface, what an eye sees, false colour",
           {flag<B>("--work-plane", true, FIELD(bake.work_plane.enabled),
-                   "a grid of sensors over the floors, facing up: OUTDIR/sensors.csv and the heat map work_plane.png "
-                   "(seen from above, -Z up, +X right), min, mean, max and uniformity (min / mean) in report.json and "
-                   "on stderr"),
+                   "a grid of sensors over the enclosed floors, facing up: OUTDIR/sensors.csv, a heat map per storey "
+                   "(work_plane.png, or work_plane_storey_N.png; seen from above, -Z up, +X right, rooms numbered), "
+                   "work_plane_rooms.csv, and min, mean, max and uniformity (min / mean) per storey and room in "
+                   "report.json and on stderr"),
            number<B>("--work-plane-height", "M", 0, 1000, "m", FIELD(bake.work_plane.height),
                      "its height over the floors: 0.8 for desks, 0 for circulation"),
            number<B>("--work-plane-spacing", "M", 0.001, 1000, "m", FIELD(bake.work_plane.spacing),
                      "between the grid's points, along x and z"),
            over,
+           flag<B>("--work-plane-outdoors", true, FIELD(bake.work_plane.outdoors),
+                   "measure floors open to the sky or without walls round them too (terrain, roofs, balconies, a "
+                   "plaza); by default a point needs something above it and walls round it"),
            text<B>("--sensors", "FILE.csv", FIELD(sensor_file),
                    "points to measure at too: a line each, x,y,z or x,y,z,nx,ny,nz (metres; the meter faces +Y, up, "
                    "unless given); a header line and # comments are skipped"),

@@ -116,6 +116,34 @@ void print_readings(const char* what, const radbake::ReadingSummary& lux, const 
   std::fprintf(stderr, "\n");
 }
 
+// With more than one storey or room, a line per storey and a row per room (work_plane_rooms.csv
+// holds the same), and how many floor points were left out as outdoors.
+void print_storeys(const radbake::AnalysisFiles& analysis) {
+  if (analysis.outdoor_points > 0)
+    std::fprintf(stderr, "radbake: work plane: %zu floor points left out as open to the sky or unwalled "
+                         "(--work-plane-outdoors measures them)\n", analysis.outdoor_points);
+  if (analysis.sliver_points > 0)
+    std::fprintf(stderr, "radbake: work plane: %zu points left out in regions under 1 m2 (window reveals, gaps between "
+                         "walls)\n", analysis.sliver_points);
+  if (analysis.storeys.size() < 2 && analysis.rooms.size() < 2) return;
+  const bool percent = analysis.work_plane_daylight_factor.count > 0;
+  for (size_t s = 0; s < analysis.storeys.size(); ++s) {
+    const radbake::StoreyReadings& storey = analysis.storeys[s];
+    std::fprintf(stderr, "radbake: storey %zu (floor at %.2f m, %s):\n", s + 1, storey.floor_height,
+                 storey.maps.empty() ? "" : storey.maps.back().c_str());
+    std::fprintf(stderr, "  room  points  area m2   min lx  mean lx   max lx    U0%s\n",
+                 percent ? "   DF min %  DF mean %  DF max %" : "");
+    for (const radbake::RoomReadings& r : analysis.rooms) {
+      if (r.storey != int(s)) continue;
+      std::fprintf(stderr, "  %4d  %6zu  %7.1f  %7.4g  %7.4g  %7.4g  %4.2f", r.number, r.lux.count, r.area, r.lux.min,
+                   r.lux.mean, r.lux.max, r.lux.uniformity);
+      if (percent)
+        std::fprintf(stderr, "  %9.3g  %9.3g  %8.3g", r.daylight_factor.min, r.daylight_factor.mean, r.daylight_factor.max);
+      std::fprintf(stderr, "\n");
+    }
+  }
+}
+
 // A bake's output folder, staged until committed and abandoned on an interrupt, and its progress
 // shown on stderr, where the callback also asks whether to stop.
 struct OutputSession {
@@ -342,6 +370,7 @@ int run_bake(const radbake::BakeCommand& cmd, radbake::Team& team) {
     for (const std::string& w : warnings) std::fprintf(stderr, "radbake: warning: %s\n", clipped(w, 600).c_str());
     print_readings("sensors", run.analysis.sensors, run.analysis.sensors_daylight_factor);
     print_readings("work plane", run.analysis.work_plane, run.analysis.work_plane_daylight_factor);
+    print_storeys(run.analysis);
   }
   char balance[64] = "energy balance not measured";
   if (result.report.balance.measured)

@@ -27,12 +27,9 @@ namespace {
 constexpr double kChartsEnd = 0.6, kPackingEnd = 0.95;
 // Packing attempts: one, or a search for the automatic density (below).
 constexpr int kMostPackings = 48;
-// The share of its page the automatic density fills (of the page's texels, charts' bounding
-// rectangles counted whole): the packer leaves about this much once the page is nearly full.
-constexpr double kFilledShare = 0.8;
-// A page holds the texel budget when this share of it fits: charts carry a border of padding and
-// partly covered texels, so a budget that is most of a page's area misses it by a little.
-constexpr double kBudgetHeld = 0.9;
+// The automatic density's pages grow by twos, so a budget is met within a factor of sqrt(2) either
+// way: the smallest page that holds budget / sqrt(2) texels, filled up to budget * sqrt(2).
+constexpr double kBudgetLatitude = 1.41421356;
 
 double world_area(const MeshView& mesh) {
   double area = 0;
@@ -282,24 +279,23 @@ Atlas ensure_lightmap_uvs(const std::vector<MeshView>& meshes, const AtlasOption
     return true;
   };
   // The automatic density on power-of-two pages: the smallest page, square or twice as wide as
-  // high, that holds the texel budget, then filled to kFilledShare of it (engines allocate the
-  // whole page, so a budget on a page twice its size is half empty: the Cornell box's 50,000
-  // texels were 39% of a 1024 x 128 page). A scene gets from 90% to about twice the budget.
+  // high, that holds the texel budget within kBudgetLatitude, filled as far as the latitude allows
+  // (engines allocate the whole page, so a budget on a page twice its size is half empty: the
+  // Cornell box's 50,000 texels were 39% of a 1024 x 128 page).
   AtlasPage smallest_holding_budget{0, 0};
+  const double least_texels = double(options.automatic_texels) / kBudgetLatitude;
   if (options.texel_density == 0 && !options.any_page_size && !charts.empty())
     for (int side = 16; side <= page_size && smallest_holding_budget.width == 0; side *= 2)
       for (AtlasPage page : {AtlasPage{side, side / 2}, AtlasPage{side, side}}) {
-        if (page.height < 16 || double(page.width) * page.height < kBudgetHeld * double(options.automatic_texels)) continue;
-        if (fits(pack(budget_density * float(std::sqrt(kBudgetHeld)), PackGoal::OnePageOrNothing, page))) {
+        if (page.height < 16 || double(page.width) * page.height < least_texels) continue;
+        if (fits(pack(budget_density / float(std::sqrt(kBudgetLatitude)), PackGoal::OnePageOrNothing, page))) {
           smallest_holding_budget = page;
           break;
         }
       }
   if (smallest_holding_budget.width > 0) {
-    const double fill_texels = std::max(double(options.automatic_texels),
-                                        kFilledShare * smallest_holding_budget.width * smallest_holding_budget.height);
-    const float fill_density = float(std::sqrt(fill_texels / std::max(total_area, 1e-12)));
-    most_that_fits(smallest_holding_budget, fill_density, fill_density);
+    const float most_density = budget_density * float(std::sqrt(kBudgetLatitude));
+    most_that_fits(smallest_holding_budget, most_density, most_density);
   } else if (charts.empty() || (options.texel_density > 0 && !options.fit_one_page)) {
     packed = pack(density, PackGoal::AsManyPagesAsNeeded, largest_page);
   } else if (!most_that_fits(largest_page, density, options.texel_density > 0 ? options.texel_density : budget_density)) {
@@ -317,7 +313,8 @@ Atlas ensure_lightmap_uvs(const std::vector<MeshView>& meshes, const AtlasOption
     std::snprintf(choice, sizeof choice, atlas.density_lowered ? "given, lowered to fit one page" : "given");
   else if (smallest_holding_budget.width > 0)
     std::snprintf(choice, sizeof choice,
-                  "automatic: %dx%d, the smallest power-of-two page that holds %zu texels over %.3g m2 of surface, filled",
+                  "automatic: %dx%d, the smallest power-of-two page that holds %zu texels over %.3g m2 of surface "
+                  "(to a factor of 1.41), filled",
                   smallest_holding_budget.width, smallest_holding_budget.height, options.automatic_texels, total_area);
   else if (density >= budget_density * 0.999f)
     std::snprintf(choice, sizeof choice, "automatic: %zu texels over %.3g m2 of surface", options.automatic_texels, total_area);

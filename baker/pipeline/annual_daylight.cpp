@@ -157,8 +157,7 @@ AnnualDaylight annual_daylight(const Scene& scene, const Atlas& atlas, const Bak
   out.sensors = options.sensors;
   if (options.work_plane.enabled) {
     out.work_plane = work_plane(scene, surface, tracer, options.work_plane);
-    for (int32_t& k : out.work_plane.sensor_at)
-      if (k >= 0) k += int32_t(options.sensors.size());
+    shift_sensor_indices(out.work_plane, int32_t(options.sensors.size()));
     out.sensors.insert(out.sensors.end(), out.work_plane.sensors.begin(), out.work_plane.sensors.end());
   }
   // The eyes of BakeOptions::views are sensors facing where they look, split off at the end.

@@ -42,7 +42,7 @@ struct AnnualDaylightOptions {
 
 struct AnnualDaylight {
   std::vector<Sensor> sensors;  // BakeOptions::sensors, then the work plane's
-  WorkPlane work_plane;         // its sensor_at indexes `sensors`
+  WorkPlane work_plane;         // its storeys and rooms index `sensors`
   size_t hours = 0;
   std::vector<float> lux;       // [hour * sensors + sensor], lux
   std::vector<float> sun_lux;   // the same, the sun's direct light alone (for annual sun exposure)

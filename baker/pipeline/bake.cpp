@@ -493,8 +493,7 @@ BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& given
   if (!options.sensors.empty() || options.work_plane.enabled) {
     result.sensors = options.sensors;
     if (options.work_plane.enabled) {
-      for (int32_t& k : result.work_plane.sensor_at)
-        if (k >= 0) k += int32_t(options.sensors.size());
+      shift_sensor_indices(result.work_plane, int32_t(options.sensors.size()));
       result.sensors.insert(result.sensors.end(), result.work_plane.sensors.begin(), result.work_plane.sensors.end());
     }
     const std::vector<Rgb> exitance = radiosity.empty() ? radiosity_of(elements, result.irradiance) : radiosity;

@@ -73,7 +73,7 @@ struct BakeResult {
   std::vector<PerspectiveImage> perspectives;      // per BakeOptions::views, the same eye
   std::vector<Glare> glare;                        // per view
   LightProbes probes;                              // with BakeOptions::probes
-  WorkPlane work_plane;                            // its sensor_at indexes `sensors`
+  WorkPlane work_plane;                            // its storeys and rooms index `sensors`
   BakeReport report;
 };
 

@@ -39,14 +39,31 @@ LightmapPage grey_page(int width, int height, const std::vector<float>& values) 
 
 }  // namespace
 
-void write_work_plane_map(const std::string& path, const WorkPlane& plane, const std::vector<double>& values,
-                          const FalseColourScale& scale) {
-  std::vector<float> grid(plane.sensor_at.size(), std::numeric_limits<float>::quiet_NaN());
-  for (size_t k = 0; k < grid.size(); ++k)
-    if (plane.sensor_at[k] >= 0) grid[k] = float(values[size_t(plane.sensor_at[k])]);
+std::vector<std::string> write_work_plane_maps(const std::string& folder, const std::string& stem,
+                                               const WorkPlane& plane, const std::vector<double>& values,
+                                               FalseColourScale scale) {
+  if (scale.max == 0) {
+    std::vector<float> readings;
+    for (const WorkPlaneStorey& storey : plane.storeys)
+      for (int32_t k : storey.sensor_at)
+        if (k >= 0) readings.push_back(float(values[size_t(k)]));
+    scale.max = automatic_scale_max(readings);
+  }
   // Cells large enough that a small room's grid reads at a glance (about 480 pixels across).
   const int cell = std::clamp(480 / std::max(plane.columns, plane.rows), 2, 64);
-  write_false_colour(path, grid, plane.columns, plane.rows, scale, cell);
+  std::vector<std::string> names;
+  for (size_t s = 0; s < plane.storeys.size(); ++s) {
+    const std::vector<int32_t>& at = plane.storeys[s].sensor_at;
+    std::vector<float> grid(at.size(), std::numeric_limits<float>::quiet_NaN());
+    for (size_t k = 0; k < grid.size(); ++k)
+      if (at[k] >= 0) grid[k] = float(values[size_t(at[k])]);
+    FalseColourResult image = false_colour(grid, plane.columns, plane.rows, scale, cell);
+    for (const WorkPlaneRoom& room : plane.rooms)
+      if (room.storey == int(s)) label_cell(image.image, std::to_string(room.number), room.label_column, room.label_row, cell);
+    names.push_back(plane.storeys.size() == 1 ? stem + ".png" : stem + "_storey_" + std::to_string(s + 1) + ".png");
+    write_png(folder + "/" + names.back(), image.image.width, image.image.height, image.image.rgb);
+  }
+  return names;
 }
 
 void write_page_map(const std::string& path, const LightmapPage& page, const FalseColourScale& scale) {
@@ -140,23 +157,67 @@ AnalysisFiles write_analysis(const BakeResult& result, const std::string& folder
   }
   const WorkPlane& plane = result.work_plane;
   if (!plane.sensors.empty()) {
-    std::vector<double> readings;
-    for (int32_t k : plane.sensor_at)
-      if (k >= 0) readings.push_back(lux[size_t(k)]);
-    out.work_plane = summarise(readings);
+    out.outdoor_points = plane.outdoor_points;
+    out.sliver_points = plane.sliver_points;
+    std::vector<double> percent(lux);
+    for (double& v : percent) v *= to_percent;
+    auto readings_of = [&](const std::vector<int32_t>& sensors, const std::vector<double>& values) {
+      std::vector<double> readings;
+      for (int32_t k : sensors)
+        if (k >= 0) readings.push_back(values[size_t(k)]);
+      return summarise(readings);
+    };
+    std::vector<int32_t> all;
+    for (const WorkPlaneStorey& storey : plane.storeys) {
+      StoreyReadings readings;
+      readings.floor_height = storey.floor_height;
+      readings.lux = readings_of(storey.sensor_at, lux);
+      if (to_percent > 0) readings.daylight_factor = readings_of(storey.sensor_at, percent);
+      out.storeys.push_back(readings);
+      all.insert(all.end(), storey.sensor_at.begin(), storey.sensor_at.end());
+    }
+    out.work_plane = readings_of(all, lux);
     FalseColourScale scale = options.scale;
     scale.unit = "lx";
-    write_work_plane_map(folder + "/work_plane.png", plane, lux, scale);
-    out.files.push_back("work_plane.png");
+    const std::vector<std::string> maps = write_work_plane_maps(folder, "work_plane", plane, lux, scale);
+    std::vector<std::string> percent_maps;
     if (to_percent > 0) {
-      std::vector<double> percent(lux);
-      for (double& v : percent) v *= to_percent;
-      for (double& v : readings) v *= to_percent;
-      out.work_plane_daylight_factor = summarise(readings);
+      out.work_plane_daylight_factor = readings_of(all, percent);
       scale.unit = "%";
-      write_work_plane_map(folder + "/work_plane_daylight_factor.png", plane, percent, scale);
-      out.files.push_back("work_plane_daylight_factor.png");
+      scale.max = 0;  // the lux scale's max means nothing in percent
+      percent_maps = write_work_plane_maps(folder, "work_plane_daylight_factor", plane, percent, scale);
     }
+    for (size_t s = 0; s < out.storeys.size(); ++s) {
+      out.storeys[s].maps.push_back(maps[s]);
+      if (!percent_maps.empty()) out.storeys[s].maps.push_back(percent_maps[s]);
+      out.files.insert(out.files.end(), out.storeys[s].maps.begin(), out.storeys[s].maps.end());
+    }
+    std::ofstream csv(folder + "/work_plane_rooms.csv");
+    csv << "storey,room,points,area_m2,centre_x,centre_z,min_lx,mean_lx,max_lx,uniformity"
+        << (to_percent > 0 ? ",daylight_factor_min_percent,daylight_factor_mean_percent,daylight_factor_max_percent" : "")
+        << "\n";
+    for (const WorkPlaneRoom& room : plane.rooms) {
+      RoomReadings r;
+      r.storey = room.storey, r.number = room.number;
+      r.area = double(room.sensors.size()) * plane.spacing * plane.spacing;
+      for (int32_t k : room.sensors)
+        r.centre_x += result.sensors[size_t(k)].position.x, r.centre_z += result.sensors[size_t(k)].position.z;
+      r.centre_x /= double(room.sensors.size()), r.centre_z /= double(room.sensors.size());
+      r.lux = readings_of(room.sensors, lux);
+      if (to_percent > 0) r.daylight_factor = readings_of(room.sensors, percent);
+      char row[320];
+      std::snprintf(row, sizeof row, "%d,%d,%zu,%.3f,%.3f,%.3f,%.6g,%.6g,%.6g,%.4f", r.storey + 1, r.number, r.lux.count,
+                    r.area, r.centre_x, r.centre_z, r.lux.min, r.lux.mean, r.lux.max, r.lux.uniformity);
+      csv << row;
+      if (to_percent > 0) {
+        std::snprintf(row, sizeof row, ",%.4g,%.4g,%.4g", r.daylight_factor.min, r.daylight_factor.mean, r.daylight_factor.max);
+        csv << row;
+      }
+      csv << "\n";
+      out.rooms.push_back(r);
+    }
+    if (!csv) throw std::runtime_error("cannot write " + folder + "/work_plane_rooms.csv");
+    out.files.push_back("work_plane_rooms.csv");
   }
   for (size_t v = 0; v < result.views.size(); ++v) {
     const FisheyeImage& image = result.views[v];

@@ -34,11 +34,27 @@ struct ViewGlare {
   Glare glare;
 };
 
+struct StoreyReadings {
+  double floor_height = 0;                  // metres
+  ReadingSummary lux, daylight_factor;      // daylight factor in percent, when asked
+  std::vector<std::string> maps;            // its images, relative to the folder
+};
+
+struct RoomReadings {
+  int storey = 0, number = 0;               // as WorkPlaneRoom: storey index, number on the map
+  double area = 0;                          // m2: points times the grid cell's area
+  double centre_x = 0, centre_z = 0;        // metres: the mean of its points
+  ReadingSummary lux, daylight_factor;
+};
+
 struct AnalysisFiles {
   std::vector<std::string> files;  // written, relative to the folder
   std::vector<ViewGlare> views;    // per BakeOptions::views
   ReadingSummary sensors, work_plane;              // lux
   ReadingSummary sensors_daylight_factor, work_plane_daylight_factor;  // percent, when asked
+  std::vector<StoreyReadings> storeys;             // the work plane's, lowest first
+  std::vector<RoomReadings> rooms;                 // by storey, then number
+  size_t outdoor_points = 0, sliver_points = 0;    // floor points the work plane left out (WorkPlane)
 };
 
 // Sensors from a CSV file: a line per point, "x,y,z" or "x,y,z,nx,ny,nz" in metres (the normal
@@ -46,18 +62,23 @@ struct AnalysisFiles {
 // skipped. Throws InputError naming the file and line for anything else, and beyond max_points.
 std::vector<Sensor> read_sensor_csv(const std::string& path, size_t max_points = 1000000);
 
-// The work plane seen from above (-Z up, +X right) in false colour with a legend: `values` per
-// sensor, indexed as plane.sensor_at indexes them; cells where no floor is under a point are grey.
-void write_work_plane_map(const std::string& path, const WorkPlane& plane, const std::vector<double>& values,
-                          const FalseColourScale& scale);
+// The work plane seen from above (-Z up, +X right) in false colour with a legend, an image per
+// storey with each room's number on it: STEM.png for one storey, else STEM_storey_N.png (N = 1
+// lowest). `values` per sensor, indexed as the storeys' sensor_at index them; cells without a point
+// are grey. One scale for every storey; an automatic one is taken from the plane's own points.
+// Returns the images' names.
+std::vector<std::string> write_work_plane_maps(const std::string& folder, const std::string& stem,
+                                               const WorkPlane& plane, const std::vector<double>& values,
+                                               FalseColourScale scale);
 
 // A lightmap page in false colour with a legend: each written texel's value (mean of R, G, B),
 // the padding grey.
 void write_page_map(const std::string& path, const LightmapPage& page, const FalseColourScale& scale);
 
 // Writes into `folder`: sensors.csv (every sensor: position, normal, lux, and the daylight factor
-// in percent when asked), work_plane.png (and work_plane_daylight_factor.png) seen from above
-// with -Z up and +X right, NAME_false_colour_N.png and NAME_daylight_factor_N.png per page, and
+// in percent when asked), the work plane's maps (write_work_plane_maps: work_plane and
+// work_plane_daylight_factor) and work_plane_rooms.csv (a row per room: storey, number, points,
+// area, centre, lux and daylight factor statistics), NAME_false_colour_N.png and NAME_daylight_factor_N.png per page, and
 // per view view_N.exr (its fisheye luminance, cd/m2) and view_N.png (the same in false colour,
 // four decades), and view_N_perspective.exr and .png (the eye in perspective, 70 degrees across).
 AnalysisFiles write_analysis(const BakeResult& result, const std::string& folder, const std::string& name,

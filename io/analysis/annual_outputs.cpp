@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <fstream>
 #include <stdexcept>
+#include <tuple>
 
 #include "io/analysis/analysis_outputs.h"
 #include "io/lightmaps/lightmap_images.h"
@@ -57,12 +58,14 @@ std::vector<std::string> write_annual(const AnnualRun& run, const std::string& f
     FalseColourScale percent;
     percent.unit = "%";
     percent.max = 100;
-    write_work_plane_map(folder + "/work_plane_daylight_autonomy.png", a.work_plane, da, percent);
-    write_work_plane_map(folder + "/work_plane_udi_autonomous.png", a.work_plane, udi, percent);
     FalseColourScale hours;
     hours.unit = "";  // hours of the sun's direct light at 1000 lx or more
-    write_work_plane_map(folder + "/work_plane_sun_hours.png", a.work_plane, sun_hours, hours);
-    files.insert(files.end(), {"work_plane_daylight_autonomy.png", "work_plane_udi_autonomous.png", "work_plane_sun_hours.png"});
+    for (const auto& [stem, values, scale] : {std::tuple{"work_plane_daylight_autonomy", &da, percent},
+                                              std::tuple{"work_plane_udi_autonomous", &udi, percent},
+                                              std::tuple{"work_plane_sun_hours", &sun_hours, hours}}) {
+      const std::vector<std::string> maps = write_work_plane_maps(folder, stem, a.work_plane, *values, scale);
+      files.insert(files.end(), maps.begin(), maps.end());
+    }
   }
   for (size_t p = 0; p < a.texel_daylight_autonomy.size(); ++p) {
     FalseColourScale percent;

@@ -32,8 +32,9 @@ struct AnnualRun {
 
 // Writes into `folder`: annual_illuminance.f32 (little-endian float32, lux, hour-major: all
 // sensors for the file's first hour, then the next), annual_sensors.csv (position, normal, DA,
-// UDI bins in percent of the occupied hours, sun hours), with a work plane
-// work_plane_daylight_autonomy.png, work_plane_udi_autonomous.png and work_plane_sun_hours.png,
+// UDI bins in percent of the occupied hours, sun hours), with a work plane the maps
+// work_plane_daylight_autonomy, work_plane_udi_autonomous and work_plane_sun_hours (a PNG per storey,
+// write_work_plane_maps),
 // with eyes annual_dgp.f32 (float32, hour-major, eye by eye), per lightmap page
 // NAME_daylight_autonomy_N.png, NAME_udi_N.png (percent) and NAME_mean_lux_N.exr, then
 // report.json. Returns the files written, relative to the folder.

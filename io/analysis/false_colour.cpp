@@ -322,6 +322,14 @@ std::vector<LegendTick> legend_ticks(const FalseColourScale& scale, double max) 
   return ticks;
 }
 
+void label_cell(RgbImage& image, const std::string& text, int column, int row, int cell_pixels) {
+  const int text_scale = cell_pixels >= 16 ? 2 : 1, margin = text_scale;
+  const int width = text_width(text, text_scale), height = kGlyphHeight * text_scale;
+  const int left = column * cell_pixels + cell_pixels / 2 - width / 2, top = row * cell_pixels + cell_pixels / 2 - height / 2;
+  fill_rect(image, left - margin, top - margin, width + 2 * margin, height + 2 * margin, {0, 0, 0});
+  draw_text(image, text, left, top, text_scale, {255, 255, 255});
+}
+
 FalseColourResult false_colour(const std::vector<float>& values, int width, int height,
                                const FalseColourScale& scale, int cell_pixels) {
   check_scale(scale);

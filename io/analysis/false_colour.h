@@ -60,6 +60,11 @@ inline constexpr std::array<uint8_t, 3> kNoDataColour = {128, 128, 128};
 FalseColourResult false_colour(const std::vector<float>& values, int width, int height,
                                const FalseColourScale& scale, int cell_pixels = 1);
 
+// Writes `text` (the built-in font) centred on the grid cell (column, row) of an image false_colour
+// made with cell_pixels, in white on a black box so it reads on any colour of the map; the box may
+// spill over neighbouring cells and is clipped to the image. For room numbers on a work plane.
+void label_cell(RgbImage& image, const std::string& text, int column, int row, int cell_pixels);
+
 // Parts of false_colour, for tests and for callers that draw their own legends.
 
 // The colour map: Google's "turbo" (Anton Mikhailov, "Turbo, An Improved Rainbow Colormap for

@@ -36,6 +36,31 @@ nlohmann::ordered_json readings_json(const ReadingSummary& lux, const ReadingSum
   return out;
 }
 
+// The whole plane's readings, then per storey its readings, maps and rooms.
+nlohmann::ordered_json work_plane_json(const AnalysisFiles& analysis) {
+  nlohmann::ordered_json out = readings_json(analysis.work_plane, analysis.work_plane_daylight_factor);
+  if (out.is_null()) return out;
+  out["outdoor_points_left_out"] = analysis.outdoor_points;
+  out["points_in_regions_under_1_m2_left_out"] = analysis.sliver_points;
+  out["storeys"] = nlohmann::ordered_json::array();
+  for (size_t s = 0; s < analysis.storeys.size(); ++s) {
+    const StoreyReadings& storey = analysis.storeys[s];
+    nlohmann::ordered_json j = {{"storey", s + 1}, {"floor_height_m", storey.floor_height}};
+    j.update(readings_json(storey.lux, storey.daylight_factor));
+    j["maps"] = storey.maps;
+    j["rooms"] = nlohmann::ordered_json::array();
+    for (const RoomReadings& room : analysis.rooms) {
+      if (room.storey != int(s)) continue;
+      nlohmann::ordered_json r = {{"room", room.number}, {"area_m2", room.area}, {"centre_x", room.centre_x},
+                                  {"centre_z", room.centre_z}};
+      r.update(readings_json(room.lux, room.daylight_factor));
+      j["rooms"].push_back(r);
+    }
+    out["storeys"].push_back(j);
+  }
+  return out;
+}
+
 // Per view: the eye, the vertical illuminance and the glare its fisheye shows (baker/readings/glare.h).
 nlohmann::ordered_json views_json(const std::vector<ViewGlare>& views) {
   nlohmann::ordered_json out = nlohmann::ordered_json::array();
@@ -165,7 +190,7 @@ void write_report(const std::string& path, const RunInfo& run, const Scene& scen
       {"display", display},
       {"daylight", daylight_json(run.daylight)},
       {"sensors", readings_json(run.analysis.sensors, run.analysis.sensors_daylight_factor)},
-      {"work_plane", readings_json(run.analysis.work_plane, run.analysis.work_plane_daylight_factor)},
+      {"work_plane", work_plane_json(run.analysis)},
       {"views", views_json(run.analysis.views)},
       {"surfaces", surfaces_json(bake.surfaces)},
       {"warnings", warnings},

@@ -43,10 +43,10 @@ int png_width(const std::string& path) {
 TEST(AnalysisCli, AWorkPlaneUnderAnOvercastSkyGivesLuxDaylightFactorsAndTheirImages) {
   const std::string out = test::fresh_folder("analysis_cli_work_plane") + "/out";
   const test::Outcome r = test::radbake("bake " + fixture("open_floor.gltf") + " -o " + out +
-                                        " --sky cie-overcast --sky-illuminance 8000 --work-plane"
+                                        " --sky cie-overcast --sky-illuminance 8000 --work-plane --work-plane-outdoors"
                                         " --work-plane-spacing 1 --daylight-factor --false-colour log");
   ASSERT_EQ(r.status, 0) << r.err;
-  // The open 4 m floor: a 4 x 4 grid, each point facing the whole sky and nothing else (the floor
+  // The open 4 m floor (measured as asked, though open to the sky): a 4 x 4 grid, each point facing the whole sky and nothing else (the floor
   // is below it): 8,000 lx, a daylight factor of 100%.
   const std::vector<std::vector<double>> rows = csv_rows(out + "/sensors.csv");
   ASSERT_EQ(rows.size(), 16u);

@@ -95,7 +95,7 @@ const std::map<std::string, std::string>& bake_examples() {
       {"--ground-reflectance", out + " --ground-reflectance 0.3"}, {"--sky-rays", out + " --sky-rays 64"},
       {"--sun-rays", out + " --sun-rays 8"}, {"--work-plane", out + " --work-plane"},
       {"--work-plane-height", out + " --work-plane-height 0.5"}, {"--work-plane-spacing", out + " --work-plane-spacing 1"},
-      {"--work-plane-over", out + " --work-plane-over floor"}, {"--sensors", out + " --sensors points.csv"},
+      {"--work-plane-over", out + " --work-plane-over floor"}, {"--work-plane-outdoors", out + " --work-plane --work-plane-outdoors"}, {"--sensors", out + " --sensors points.csv"},
       {"--sensor-rays", out + " --sensor-rays 64"}, {"--daylight-factor", out + " --daylight-factor"},
       {"--false-colour", out + " --false-colour log"}, {"--false-colour-max", out + " --false-colour-max 500"},
       {"--view", out + " --view 1,1,1:0,0,1"}, {"--view-size", out + " --view-size 64"},

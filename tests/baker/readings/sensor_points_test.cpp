@@ -1,5 +1,5 @@
-// Illuminance at points in the air (baker/readings/sensor_points.h), the work plane's grid
-// (baker/readings/work_plane.h) and per-surface statistics, against closed forms.
+// Illuminance at points in the air (baker/readings/sensor_points.h) and per-surface statistics,
+// against closed forms.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -90,57 +90,6 @@ TEST(Sensors, JustAboveAFloorTheyReadWhatTheFloorsTexelsReceive) {
   RecordProperty("sensor_over_floor", std::to_string(r.sensor_lux[0] / floor.x));
   // 2% bounds both gathers' noise and the texels' footprint (12.5 cm) against one point.
   EXPECT_NEAR(r.sensor_lux[0], floor.x, 0.02 * floor.x);
-}
-
-TEST(WorkPlane, AGridAtAHeightOverTheNamedFloorsOnly) {
-  Scene scene;
-  const int grey = test::add_material(scene, {0.5f, 0.5f, 0.5f});
-  test::add_quad(scene, {0, 0, 2}, {3, 0, 0}, {0, 0, -2}, grey, "classroom floor");  // 3 x 2 m at y = 0
-  test::add_quad(scene, {0, 0.75f, 1}, {1, 0, 0}, {0, 0, -1}, grey, "desk");          // a desk top over it
-  test::add_quad(scene, {5, 0.2f, 2}, {2, 0, 0}, {0, 0, -2}, grey, "terrace");        // elsewhere, higher
-  Light lamp;
-  lamp.intensity = 100;
-  lamp.position = {1.5f, 2.5f, 1};
-  scene.lights.push_back(lamp);
-  BakeOptions options;
-  options.work_plane.enabled = true;
-  options.work_plane.over = {"floor"};
-  options.work_plane.spacing = 0.5;
-  const BakeResult r = test::bake_scene(scene, coarse(), options).result;
-  const WorkPlane& plane = r.work_plane;
-  EXPECT_EQ(plane.columns, 6);
-  EXPECT_EQ(plane.rows, 4);
-  ASSERT_EQ(r.sensors.size(), 24u);
-  for (const Sensor& s : r.sensors) {
-    EXPECT_FLOAT_EQ(s.position.y, 0.8f);  // over the floor, not the desk: the lowest floor
-    EXPECT_LT(s.position.x, 3.0f);        // not over the terrace
-  }
-  // Without names: the lowest surface facing up under each point, the terrace's too.
-  options.work_plane.over.clear();
-  const BakeResult all = test::bake_scene(scene, coarse(), options).result;
-  size_t terrace = 0;
-  for (const Sensor& s : all.sensors) terrace += s.position.x > 4.9f && std::fabs(s.position.y - 1.0f) < 1e-5f;
-  EXPECT_EQ(terrace, 16u);  // 2 x 2 m at 0.5 m
-  // Facing up with nothing above but the lamp, each point reads I cos / d^2 (1e-4: float
-  // rounding; the floor and the desk top below the plane are behind the meter).
-  for (size_t k = 0; k < r.sensors.size(); ++k) {
-    const double lamp_lux = test::point_light_lux(100, lamp.position, r.sensors[k].position, {0, 1, 0});
-    EXPECT_NEAR(r.sensor_lux[k], lamp_lux, 1e-4 * lamp_lux);
-  }
-}
-
-TEST(WorkPlane, AtHeightZeroItIsNotShadedByTheFloorItLiesOn) {
-  Scene scene;
-  const int grey = test::add_material(scene, {0.5f, 0.5f, 0.5f});
-  test::add_quad(scene, {0, 0, 2}, {2, 0, 0}, {0, 0, -2}, grey, "floor");
-  BakeOptions options = under_a_uniform_sky(1000);
-  options.sky.rays = 64;
-  options.work_plane.enabled = true;
-  options.work_plane.height = 0;
-  const BakeResult r = test::bake_scene(scene, coarse(), options).result;
-  ASSERT_EQ(r.sensors.size(), 16u);
-  // pi L at every point: 1e-4 bounds float rounding; a ray stopped by the floor would take 1/64.
-  for (double lux : r.sensor_lux) EXPECT_NEAR(lux, M_PI * 1000, 1e-4 * M_PI * 1000);
 }
 
 TEST(SurfaceStatistics, PerInstanceAreaMeanAndUniformity) {
