@@ -27,9 +27,10 @@ namespace {
 constexpr double kChartsEnd = 0.6, kPackingEnd = 0.95;
 // Packing attempts: one, or a search for the automatic density (below).
 constexpr int kMostPackings = 48;
-// The automatic density's pages grow by twos, so a budget is met within a factor of sqrt(2) either
-// way: the smallest page that holds budget / sqrt(2) texels, filled up to budget * sqrt(2).
-constexpr double kBudgetLatitude = 1.41421356;
+// The automatic density's pages grow by twos: the smallest page that holds the texel budget to a
+// factor of sqrt(2) is chosen, then filled as far as it goes, up to kMostFill times the budget
+// (scenes of many small charts, whose padding takes most of a page, use it better so).
+constexpr double kBudgetLatitude = 1.41421356, kMostFill = 2.0;
 
 double world_area(const MeshView& mesh) {
   double area = 0;
@@ -279,7 +280,7 @@ Atlas ensure_lightmap_uvs(const std::vector<MeshView>& meshes, const AtlasOption
     return true;
   };
   // The automatic density on power-of-two pages: the smallest page, square or twice as wide as
-  // high, that holds the texel budget within kBudgetLatitude, filled as far as the latitude allows
+  // high, that holds the texel budget within kBudgetLatitude, filled up to kMostFill of it
   // (engines allocate the whole page, so a budget on a page twice its size is half empty: the
   // Cornell box's 50,000 texels were 39% of a 1024 x 128 page).
   AtlasPage smallest_holding_budget{0, 0};
@@ -294,7 +295,7 @@ Atlas ensure_lightmap_uvs(const std::vector<MeshView>& meshes, const AtlasOption
         }
       }
   if (smallest_holding_budget.width > 0) {
-    const float most_density = budget_density * float(std::sqrt(kBudgetLatitude));
+    const float most_density = budget_density * float(std::sqrt(kMostFill));
     most_that_fits(smallest_holding_budget, most_density, most_density);
   } else if (charts.empty() || (options.texel_density > 0 && !options.fit_one_page)) {
     packed = pack(density, PackGoal::AsManyPagesAsNeeded, largest_page);
@@ -314,7 +315,7 @@ Atlas ensure_lightmap_uvs(const std::vector<MeshView>& meshes, const AtlasOption
   else if (smallest_holding_budget.width > 0)
     std::snprintf(choice, sizeof choice,
                   "automatic: %dx%d, the smallest power-of-two page that holds %zu texels over %.3g m2 of surface "
-                  "(to a factor of 1.41), filled",
+                  "(to a factor of 1.41), filled up to twice that",
                   smallest_holding_budget.width, smallest_holding_budget.height, options.automatic_texels, total_area);
   else if (density >= budget_density * 0.999f)
     std::snprintf(choice, sizeof choice, "automatic: %zu texels over %.3g m2 of surface", options.automatic_texels, total_area);

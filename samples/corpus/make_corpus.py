@@ -111,7 +111,7 @@ def world_bounds(doc):
 def look_rotation(direction):
     """Quaternion turning a light's -Z onto `direction` (unit)."""
     dx, dy, dz = direction
-    ax, ay, az = -dy, dx, 0.0  # (0, 0, -1) x direction
+    ax, ay, az = dy, -dx, 0.0  # (0, 0, -1) x direction
     w = 1 - dz  # 1 + cos of the angle between them
     if w < 1e-9:
         return [0, 1, 0, 0]

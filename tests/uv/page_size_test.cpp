@@ -69,10 +69,10 @@ TEST(PageSize, SamplesGetPowerOfTwoPagesWithThePaddingKept) {
 TEST(PageSize, TheDefaultBudgetGetsTheSmallestPowerOfTwoPageThatHoldsItFilled) {
   // The defaults (50,000 texels, pages up to 1024) once gave the Cornell box and the classroom one
   // 1024 x 128 page, 39% and 40% used. Now: the smallest square or 2:1 page that holds the budget
-  // to a factor of sqrt(2), filled up to sqrt(2) times it. So (a) the page is square or 2:1, (b) the
-  // next smaller such page does not hold the budget (what the same unwrap, capped at it, gets is
-  // under 1/sqrt(2) of it), (c) the scene gets between 1/sqrt(2) and sqrt(2) of the budget, and
-  // (d) the page is well used.
+  // to a factor of sqrt(2), filled up to twice it. So (a) the page is square or 2:1, (b) the next
+  // smaller such page does not hold the budget (what the same unwrap, capped at it, gets is under
+  // 1/sqrt(2) of it), (c) the scene gets between 1/sqrt(2) and 2 times the budget, and (d) the page
+  // is well used.
   for (const char* name : {"cornell_box", "classroom", "study_room"}) {
     const Scene scene = sample(name);
     AtlasOptions defaults;
@@ -84,9 +84,9 @@ TEST(PageSize, TheDefaultBudgetGetsTheSmallestPowerOfTwoPageThatHoldsItFilled) {
     auto budget_share = [&](const Atlas& a) {
       return a.surface_area * double(a.texel_density) * a.texel_density / double(defaults.automatic_texels);
     };
-    const double latitude = std::sqrt(2.0) * (1 + 1e-3);  // 0.1%: the density search's step
-    EXPECT_GE(budget_share(atlas), 1 / latitude) << name;
-    EXPECT_LE(budget_share(atlas), latitude) << name;
+    const double step = 1 + 1e-3;  // the density search's
+    EXPECT_GE(budget_share(atlas), 1 / (std::sqrt(2.0) * step)) << name;
+    EXPECT_LE(budget_share(atlas), 2 * step) << name;
     // Measured 69.3% (Cornell box), 81.9% (classroom), 87.4% (study room), each on 256 x 256. 65%
     // leaves room for packing changes; issue 29 asks 70% of every corpus scene, not yet reached.
     EXPECT_GE(atlas.stats.utilisation, 0.65) << name;

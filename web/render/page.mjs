@@ -69,6 +69,8 @@ window.radbakeRender = async (o) => {
   camera.updateMatrixWorld();
   scene.updateMatrixWorld(true);
 
+  // A background no lit surface shows, so a test can tell the model's pixels from the rest.
+  if (o.background) renderer.setClearColor(new THREE.Color().fromArray(o.background));
   renderer.render(scene, camera);
   const gl = renderer.getContext();
   const rgba = new Uint8Array(o.width * o.height * 4);

@@ -7,6 +7,7 @@
 //   const shot = await r.render({ file: 'out/cornell_box/cornell_box_display.glb', mode: 'stock',
 //     camera: { position: [0.278, 0.273, -0.8], target: [0.278, 0.273, 0.28], fov: 39.3 },
 //     width: 256, height: 256, points: [[128, 64]], patch: 1, out: 'shot.png' });
+//   (background: [r, g, b] in 0..1 clears to that colour instead of black)
 //   shot.points[0].rgb, shot.points[0].hit.object, shot.consoleErrors
 //   await r.close();
 //
@@ -170,6 +171,7 @@ export async function openRenderer({ executablePath = CHROMIUM_PATH, args = [] }
         page.evaluate((opts) => window.radbakeRender(opts), {
           url, mode: o.mode ?? 'stock', camera: o.camera, width, height, points: o.points || [],
           pluginOptions: o.pluginOptions, mipmaps: o.mipmaps, meshopt: !!o.meshopt, antialias: !!o.antialias,
+          background: o.background,
         }),
         new Promise((_, reject) => { timer = setTimeout(() => reject(new Error(`render of ${o.file} took over ${timeoutMs} ms`)), timeoutMs); }),
       ]).finally(() => clearTimeout(timer));
