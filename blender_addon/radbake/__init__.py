@@ -3,8 +3,9 @@
 Render Properties > radbake: press Bake. The scene goes out through Blender's own glTF exporter,
 radbake bakes it in the background (progress in the status bar, Esc cancels), and the result
 comes back onto your own objects: a UV map "radbake_lightmap", a colour attribute "radbake_lux"
-(illuminance in lux), the lightmap pages as images, and a copy of each material wired to show the baked light. Remove takes all of it
-away again and gives the objects their materials back.
+(illuminance in lux), the lightmap pages as images, and a copy of each material wired to show the baked light; the
+scene's view becomes Standard, as Filmic would tone-map the baked light again. Remove takes all of
+it away again and gives the objects their materials (and the scene its view) back.
 
 For scripts and pipelines: bpy.ops.radbake.bake() run from Python (not from the UI) bakes
 synchronously, e.g. blender -b scene.blend --python-expr "import bpy; bpy.ops.radbake.bake()".
@@ -80,6 +81,12 @@ class RadbakeSettings(bpy.types.PropertyGroup):
                ('COLORS', "Vertex colours", "Only the 'radbake' colour attribute")],
         default='BOTH',
     )
+    standard_view: BoolProperty(
+        name="Standard view",
+        description="Switch the scene to the Standard view transform with no look, so the bake shows as the lightmap holds it: "
+                    "Filmic would tone-map light that is already baked (Remove bake switches back)",
+        default=True,
+    )
 
 
 from .operators import RADBAKE_OT_bake, RADBAKE_OT_remove  # noqa: E402
@@ -89,8 +96,10 @@ classes = (RadbakePreferences, RadbakeSettings, RADBAKE_OT_bake, RADBAKE_OT_remo
 
 
 def register():
-    from .compat import patch_numpy
-    patch_numpy()
+    # Blender 3.4's own glTF importer fails on Debian's numpy 1.24 without these aliases: with the
+    # add-on enabled, File > Import > glTF works for the rest of the session (numpy_aliases.py).
+    from . import numpy_aliases
+    numpy_aliases.restore()
     for cls in classes:
         bpy.utils.register_class(cls)
     bpy.types.Scene.radbake = PointerProperty(type=RadbakeSettings)

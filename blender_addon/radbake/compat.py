@@ -2,17 +2,6 @@
 import bpy
 
 
-def patch_numpy():
-    """Blender 3.4's glTF importer and exporter still call numpy.bool, which numpy 1.24 removed
-    (Debian 12 ships both); the alias puts it back for them."""
-    import warnings
-    import numpy
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", FutureWarning)  # numpy 1.24 warns on the lookup itself
-        if not hasattr(numpy, "bool"):
-            numpy.bool = bool
-
-
 def gltf_export_options():
     """Keyword arguments for bpy.ops.export_scene.gltf that mean the same on 3.4 and 4.x."""
     props = {p.identifier for p in bpy.ops.export_scene.gltf.get_rna_type().properties}

@@ -40,6 +40,8 @@ class RADBAKE_OT_bake(bpy.types.Operator):
         try:
             bake.check()
             results.apply(results.BakedScene(bake.output), targets, context.scene.radbake.bring_back)
+            if context.scene.radbake.standard_view:
+                results.use_standard_view(context.scene)
         finally:
             bake.cleanup()
         self.report({'INFO'}, "radbake: baked %d objects" % len(targets))
@@ -102,7 +104,7 @@ class RADBAKE_OT_bake(bpy.types.Operator):
 
 
 class RADBAKE_OT_remove(bpy.types.Operator):
-    """Remove everything radbake added (UV map, colours, lightmap images and materials) and restore the materials"""
+    """Remove everything radbake added (UV map, colours, lightmap images and materials) and restore the materials and the view"""
 
     bl_idname = "radbake.remove"
     bl_label = "Remove bake"
@@ -111,4 +113,5 @@ class RADBAKE_OT_remove(bpy.types.Operator):
     def execute(self, context):
         from . import results
         results.remove([o for o in context.scene.objects if o.type == 'MESH'])
+        results.restore_view(context.scene)
         return {'FINISHED'}

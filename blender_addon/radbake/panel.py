@@ -18,6 +18,7 @@ class RADBAKE_PT_panel(bpy.types.Panel):
         layout.prop(settings, "quality")
         layout.prop(settings, "solver")
         layout.prop(settings, "bring_back")
+        layout.prop(settings, "standard_view")
         row = layout.row(align=True)
         row.operator("radbake.bake", icon='RENDER_STILL')
         row.operator("radbake.remove", icon='X')

@@ -22,6 +22,7 @@ COLORS = "radbake_lux"                 # illuminance in lux (or radiosity in lm/
 ORIGINAL_MATERIALS = "radbake_original_materials"  # per slot, "" for an empty slot
 ADDED_SLOT = "radbake_added_slot"                  # the object had no material slot
 ORIGINAL_MESH = "radbake_original_mesh"            # the mesh it shared with other objects
+ORIGINAL_VIEW = "radbake_original_view"            # on the scene: [view transform, look] before the bake
 EMITTED_PER_STRENGTH = LUMENS_PER_WATT * math.pi  # lm/m2 leaving per unit of Blender emission strength
 COMPONENTS = {"SCALAR": 1, "VEC2": 2, "VEC3": 3, "VEC4": 4}
 DTYPES = {5126: numpy.float32, 5125: numpy.uint32, 5123: numpy.uint16, 5121: numpy.uint8}
@@ -233,6 +234,26 @@ def _emitted_light(material, nodes, links, exposure):
     else:
         scaled.inputs["Scale"].default_value = strength.default_value * EMITTED_PER_STRENGTH * exposure
     return scaled
+
+
+def use_standard_view(scene):
+    """The Standard view transform, no look: the lightmap material emits base colour x the baked
+    light on the PNG's scale, and Standard shows that as the PNG's sRGB codes. Blender's default,
+    Filmic, tone-maps it a second time (measured: up to 49 of 255 off the page, tests/blender). The
+    first bake remembers the scene's own view for Remove."""
+    view = scene.view_settings
+    if ORIGINAL_VIEW not in scene:
+        scene[ORIGINAL_VIEW] = [view.view_transform, view.look]
+    view.view_transform = 'Standard'
+    view.look = 'None'
+
+
+def restore_view(scene):
+    """The view the scene had before its first bake switched it to Standard."""
+    original = scene.get(ORIGINAL_VIEW)
+    if original is not None:
+        scene.view_settings.view_transform, scene.view_settings.look = original
+        del scene[ORIGINAL_VIEW]
 
 
 def remove(objects):

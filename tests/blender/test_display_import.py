@@ -18,19 +18,13 @@ import time
 
 import bpy
 import mathutils
-from mathutils.interpolate import poly_3d_calc
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from pixels import footprint_mean, page_texel, pixel_ray, render_png, srgb_to_linear, surface_uv  # noqa: E402
 
 RADBAKE, SOURCE = sys.argv[sys.argv.index("--") + 1:]
 SIZE = 96  # render width and height in pixels
 WALLS = ("back_wall", "left_wall_red", "floor")
-
-
-def srgb_to_linear(s):
-    return s / 12.92 if s <= 0.04045 else ((s + 0.055) / 1.055) ** 2.4
-
-
-def linear_to_srgb(v):
-    return v * 12.92 if v <= 0.0031308 else 1.055 * v ** (1 / 2.4) - 0.055
 
 
 def bake(out):
@@ -66,72 +60,26 @@ def engine_camera(engine_gltf):
 
 def render(scene, path):
     """A small Cycles render; Standard view so the PNG holds the emitted colour sRGB-encoded as is."""
-    world = bpy.data.worlds.new("black")
-    world.color = (0, 0, 0)
-    world.use_nodes = False
-    scene.world = world
-    scene.render.engine = 'CYCLES'
-    scene.cycles.device = 'CPU'
-    scene.cycles.samples = 64
-    scene.cycles.use_denoising = False  # Debian's Blender has no OpenImageDenoise
-    # A box filter one pixel wide averages only what the pixel covers, so a pixel is the page
-    # over its own footprint (the default Blackman-Harris reaches into the neighbours).
-    scene.cycles.pixel_filter_type = 'BOX'
-    scene.cycles.filter_width = 1.0
-    scene.render.dither_intensity = 0.0
-    scene.render.resolution_x = scene.render.resolution_y = SIZE
-    scene.render.resolution_percentage = 100
     scene.view_settings.view_transform = 'Standard'
     scene.view_settings.look = 'None'
     scene.view_settings.exposure = 0.0
     scene.view_settings.gamma = 1.0
     scene.display_settings.display_device = 'sRGB'
-    scene.render.image_settings.file_format = 'PNG'
-    scene.render.image_settings.color_mode = 'RGB'
-    scene.render.image_settings.color_depth = '8'
-    scene.render.filepath = path
-    bpy.ops.render.render(write_still=True)
-    image = bpy.data.images.load(path)
-    assert tuple(image.size) == (SIZE, SIZE), tuple(image.size)
-    return image
+    return render_png(scene, path, SIZE, samples=64)
 
 
-def pixel_ray(camera, frame, x, y):
-    """The world-space ray through a point of the image, (x, y) in pixels from its bottom left."""
-    top_right, bottom_right, bottom_left, top_left = frame
-    origin = camera.matrix_world.translation
-    local = bottom_left + (bottom_right - bottom_left) * (x / SIZE) + (top_left - bottom_left) * (y / SIZE)
-    return origin, ((camera.matrix_world @ local) - origin).normalized()
-
-
-def page_texel(pixels, width, height, uv):
-    """The page bilinearly sampled at a Blender UV (as the importer's Linear, clamped texture does)."""
-    fx = min(max(uv.x * width - 0.5, 0.0), width - 1.0)
-    fy = min(max(uv.y * height - 0.5, 0.0), height - 1.0)
-    x0, y0 = int(fx), int(fy)
-    x1, y1 = min(x0 + 1, width - 1), min(y0 + 1, height - 1)
-    ax, ay = fx - x0, fy - y0
-
-    def at(x, y, c):
-        return pixels[4 * (y * width + x) + c]
-
-    return [(at(x0, y0, c) * (1 - ax) + at(x1, y0, c) * ax) * (1 - ay) +
-            (at(x0, y1, c) * (1 - ax) + at(x1, y1, c) * ax) * ay for c in range(3)]
-
-
-def debian_numpy_alias():
+def restore_numpy_aliases():
     """Debian 12's Blender 3.4 runs its bundled glTF importer on Debian's numpy 1.24, which removed
     the numpy.bool alias the importer's default shading guess still uses (any glTF with normals
-    fails, not only ours; Blender's own builds bundle a numpy that still has it). Putting the alias back, as
-    the add-on does for itself (blender_addon/radbake/compat.py), changes nothing else: the import
-    below is the importer's own, with its default options."""
-    import warnings
-    import numpy
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", FutureWarning)  # numpy 1.24 warns on the lookup itself
-        if not hasattr(numpy, "bool"):
-            numpy.bool = bool
-            print("numpy %s has no numpy.bool: alias restored for Blender's glTF importer" % numpy.__version__)
+    fails, not only ours). A user without the add-on runs the script the add-on ships for this
+    (docs/blender.md); here it runs as Blender runs a startup script, and changes nothing else: the
+    import below is the importer's own, with its default options."""
+    import importlib.util
+    path = os.path.join(SOURCE, "blender_addon/radbake/numpy_aliases.py")
+    spec = importlib.util.spec_from_file_location("numpy_aliases", path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    module.register()
 
 
 def test_display_file_plain_import():
@@ -142,7 +90,7 @@ def test_display_file_plain_import():
     bpy.ops.wm.read_factory_settings(use_empty=True)
     assert "radbake" not in bpy.context.preferences.addons and not hasattr(bpy.types.Scene, "radbake"), \
         "the radbake add-on is enabled: this test is about Blender without it"
-    debian_numpy_alias()
+    restore_numpy_aliases()
     bpy.ops.import_scene.gltf(filepath=display_glb)
     scene = bpy.context.scene
     meshes = [o for o in scene.objects if o.type == 'MESH']
@@ -168,17 +116,10 @@ def test_display_file_plain_import():
 
     def look(x, y):
         """(wall, page colour) where the ray through image point (x, y) lands, or None."""
-        hit, location, _, face, obj, matrix = scene.ray_cast(depsgraph, *pixel_ray(camera, frame, x, y))
-        if not hit:
+        seen = surface_uv(scene, depsgraph, pixel_ray(camera, frame, SIZE, x, y))
+        if seen is None:
             return None
-        mesh = obj.data
-        poly = mesh.polygons[face]
-        local = matrix.inverted() @ location
-        corners = [mesh.vertices[mesh.loops[i].vertex_index].co for i in poly.loop_indices]
-        weights = poly_3d_calc(corners, local)
-        uvs = mesh.uv_layers.active.data
-        uv = sum((uvs[i].uv * w for i, w in zip(poly.loop_indices, weights)), mathutils.Vector((0, 0)))
-        return obj.name.split(" / ")[0], page_texel(page_pixels, page_w, page_h, uv)
+        return seen[0].name.split(" / ")[0], page_texel(page_pixels, page_w, page_h, seen[1])
 
     # What each pixel's centre sees; then, for the pixels of the checked walls away from their
     # edges, the page averaged over the pixel. The render's one-pixel box filter averages the page
@@ -202,8 +143,7 @@ def test_display_file_plain_import():
         assert all(l and l[0] == name for l in looks), (name, x, y)
         # The render averages light, so the page's sRGB code values are averaged as linear values
         # (averaging the codes themselves reads up to 4 codes dark across the floor's shadows).
-        expected_at[x, y] = name, [linear_to_srgb(sum(srgb_to_linear(l[1][c]) for l in looks) / len(looks))
-                                   for c in range(3)]
+        expected_at[x, y] = name, footprint_mean([l[1] for l in looks])
 
     # Tolerance, per channel, in linear values: 5% of the expected value plus what 2/255 in sRGB
     # code values is worth there. The 2/255 is 8-bit rounding: the render is written to an 8-bit
