@@ -228,6 +228,20 @@ int slice_count(const radbake::StageStore& store, const std::string& folder) {
   return count;
 }
 
+// A daylight factor is the overcast sky's light alone (CIE: direct sun and artificial light
+// excluded), so the scene's own lights and emitting surfaces are left out, and said so.
+void leave_out_artificial_light(radbake::Scene& scene) {
+  size_t emitting = 0;
+  for (radbake::Material& m : scene.materials)
+    if (m.emits()) ++emitting, m.emissive_strength = 0;
+  if (scene.lights.empty() && emitting == 0) return;
+  scene.warnings.push_back("--daylight-factor: the scene's " + std::to_string(scene.lights.size()) + " light" +
+                           (scene.lights.size() == 1 ? "" : "s") + " and " + std::to_string(emitting) +
+                           " emitting material" + (emitting == 1 ? "" : "s") +
+                           " are left out: a daylight factor is the overcast sky's light alone");
+  scene.lights.clear();
+}
+
 const char* stage_title(const std::string& stage) {
   if (stage == "direct light") return "the direct light";
   if (stage == "form factors") return "the form factors";
@@ -262,7 +276,10 @@ int run_bake(const radbake::BakeCommand& cmd, radbake::Team& team) {
   AnalysisOptions analysis = cmd.analysis;
   analysis.lightmap_is_irradiance = cmd.bake.store == StoredQuantity::Irradiance;
   analysis.views = cmd.bake.views;
-  if (cmd.daylight_factor) analysis.daylight_factor_reference = daylight_factor_reference(cmd.daylight, daylight);
+  if (cmd.daylight_factor) {
+    analysis.daylight_factor_reference = daylight_factor_reference(cmd.daylight, daylight);
+    leave_out_artificial_light(loaded.scene);
+  }
   if (!cmd.sensor_file.empty()) options.sensors = read_sensor_csv(cmd.sensor_file);
   const EffectPlan plan = plan_effects(loaded.scene, options.plan);
   const bool quiet = cmd.quiet || !first;

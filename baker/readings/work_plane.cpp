@@ -22,9 +22,9 @@ constexpr double kLevelBin = 0.05, kLeastStoreyHeight = 2.0;
 // Neighbouring points further apart in height than this are not one room (a step up to a stage,
 // a ramp's sides).
 constexpr float kLeastRoomStep = 0.5f;
-// Regions smaller than this, m2, are window reveals and gaps between walls, not rooms (unless the
-// grid's own cells are this large).
-constexpr double kLeastRoomArea = 1.0;
+// Regions smaller than this, m2, and than this share of their storey's largest, are window
+// reveals and gaps between walls, not rooms (a model a metre across keeps its one room).
+constexpr double kLeastRoomArea = 1.0, kSliverShare = 0.05;
 constexpr int kEnclosureRays = 16, kEnclosingHits = 12, kInsideSolidBacks = 4;
 // How far above its storey's level a floor may be: higher is a window sill, a shelf or a stair's
 // upper steps, not a floor to work at.
@@ -192,8 +192,11 @@ WorkPlane work_plane(const Scene& scene, const Surface& surface, const RayTracer
     storey.floor_height = levels[s];
     storey.sensor_at.assign(cells, -1);
     int numbered = 0;
+    size_t largest = 0;
+    for (const std::vector<size_t>& in_room : room_cells) largest = std::max(largest, in_room.size());
     for (const std::vector<size_t>& in_room : room_cells) {
-      if (double(in_room.size()) * options.spacing * options.spacing < kLeastRoomArea) {
+      if (double(in_room.size()) * options.spacing * options.spacing < kLeastRoomArea &&
+          double(in_room.size()) < kSliverShare * double(largest)) {
         plane.sliver_points += in_room.size();
         continue;
       }
@@ -221,9 +224,6 @@ WorkPlane work_plane(const Scene& scene, const Surface& surface, const RayTracer
     }
     if (numbered > 0) plane.storeys.push_back(std::move(storey));
   }
-  if (plane.sensors.empty())
-    throw InputError("the work plane found no room of 1 m2 or more (" + std::to_string(plane.sliver_points) +
-                     " points in smaller regions)");
   return plane;
 }
 

@@ -49,7 +49,7 @@ struct WorkPlane {
   std::vector<WorkPlaneRoom> rooms;      // by storey, then number
   std::vector<Sensor> sensors;           // facing up
   size_t outdoor_points = 0;             // floor points left out as open to the sky or unwalled
-  size_t sliver_points = 0;              // left out in regions under 1 m2 (window reveals, gaps)
+  size_t sliver_points = 0;              // left out in regions under 1 m2 and 5% of their storey's largest
 };
 
 // Throws InputError when no floor is found or the grid would exceed max_points.

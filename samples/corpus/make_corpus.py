@@ -29,6 +29,13 @@ SCENES = {
     "duck": ("a textured game asset: the COLLADA duck", "Collada/duck.dae", "lamp"),
 }
 
+# Where a person would look from, for scenes one looks at from inside (the tests' three.js views;
+# the others are seen from outside): in the FZK-Haus, the ground floor's largest room (the living
+# room, 45 m2, centred at x 5.83, z -2.80 by radbake's work plane), standing, facing its garden doors.
+EYES = {"fzk_haus": {"position": [5.83, 1.6, -2.8], "target": [5.83, 1.3, 0.2], "fov": 70}}
+# The walls of a building: its outside is their box (tests check work-plane points lie inside it).
+WALLS = {"fzk_haus": "IfcWall"}
+
 # Added lights. The sun: 60,000 lx (a clear day's direct normal illuminance in the CIE 171 range)
 # from 35 degrees up in the south-west, so it enters a building's windows. The lamp: a point light
 # above and in front of the model at 1.5 bounding-box diagonals from its centre, giving 300 lx there.
@@ -84,15 +91,17 @@ def node_matrix(node):
             r[6] * sz, r[7] * sz, r[8] * sz, 0, tx, ty, tz, 1]
 
 
-def world_bounds(doc):
-    """World-space box of the default scene, from each mesh's POSITION min/max corners."""
+def world_bounds(doc, named=""):
+    """World-space box of the default scene, from each mesh's POSITION min/max corners; with
+    `named`, of the nodes whose name holds it (and their children) only."""
     lo, hi = [math.inf] * 3, [-math.inf] * 3
     scene = doc.get("scenes", [{}])[doc.get("scene", 0)]
 
-    def walk(index, parent):
+    def walk(index, parent, counted):
         node = doc["nodes"][index]
         m = mat_mul(parent, node_matrix(node))
-        if "mesh" in node:
+        counted = counted or named in node.get("name", "")
+        if "mesh" in node and counted:
             for p in doc["meshes"][node["mesh"]]["primitives"]:
                 a = doc["accessors"][p["attributes"]["POSITION"]]
                 for corner in range(8):
@@ -101,10 +110,10 @@ def world_bounds(doc):
                     for i in range(3):
                         lo[i], hi[i] = min(lo[i], w[i]), max(hi[i], w[i])
         for child in node.get("children", []):
-            walk(child, m)
+            walk(child, m, counted)
 
     for root in scene.get("nodes", []):
-        walk(root, [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1])
+        walk(root, [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1], not named)
     return lo, hi
 
 
@@ -196,9 +205,14 @@ def main():
     manifest = []
     for name, (kind, source, light) in SCENES.items():
         path, said, bounds, how = make(name, source, light, folder)
-        manifest.append({"name": name, "kind": kind, "file": os.path.relpath(path, folder),
-                         "source": "assimp-testmodels: " + source, "made": how, "light_added": said,
-                         "bounds_m": bounds})
+        entry = {"name": name, "kind": kind, "file": os.path.relpath(path, folder),
+                 "source": "assimp-testmodels: " + source, "made": how, "light_added": said, "bounds_m": bounds}
+        if name in EYES:
+            entry["eye"] = EYES[name]
+        if name in WALLS:
+            lo, hi = world_bounds(read_gltf(path)[0], WALLS[name])
+            entry["walls_bounds_m"] = {"min": lo, "max": hi}
+        manifest.append(entry)
     with open(os.path.join(folder, "corpus.json"), "w") as f:
         json.dump({"scenes": manifest}, f, indent=1)
     print(f"make_corpus: {len(manifest)} scenes in {folder}")
