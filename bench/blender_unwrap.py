@@ -9,13 +9,15 @@ to the same number of texels as radbake's padding at the same page size. Prints 
 own time as "UNWRAP_SECONDS <s>".
 """
 import math
+import os
 import sys
 import time
 
-import numpy
+# Debian's Blender 3.4 glTF importer on numpy 1.24 needs the aliases numpy removed (docs/blender.md).
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "blender_addon", "radbake"))
+import numpy_aliases  # noqa: E402
 
-if not hasattr(numpy, "bool"):  # numpy 1.24 removed numpy.bool, which Blender 3.4's glTF importer uses
-    numpy.bool = bool
+numpy_aliases.restore()
 
 import bpy  # noqa: E402
 
