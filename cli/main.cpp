@@ -72,10 +72,11 @@ class PreviewWriter {
 };
 
 // The exposure both files record, metered on the pre-lit light, and the display file.
-radbake::DisplaySummary write_display(const radbake::BakeCommand& cmd, const radbake::Scene& scene,
+radbake::DisplaySummary write_display(const radbake::BakeCommand& cmd, const radbake::LoadedScene& loaded,
                                       const radbake::Atlas& atlas, const radbake::BakeResult& result,
                                       const std::string& folder, const std::string& name) {
   using namespace radbake;
+  const Scene& scene = loaded.scene;
   const bool irradiance = cmd.bake.store == StoredQuantity::Irradiance;
   const bool sh = cmd.bake.directional == Directional::SphericalHarmonics;
   const DisplayLight light = display_light(scene, atlas, result.pages, result.vertex_values,
@@ -97,12 +98,15 @@ radbake::DisplaySummary write_display(const radbake::BakeCommand& cmd, const rad
   input.lightmap_is_irradiance = irradiance;
   input.emission_scale = cmd.bake.emission_scale;
   input.exposure = light.exposure;
+  input.source = loaded.source.get();
+  input.camera = &result.display_camera;
   stop_if_interrupted();
   const DisplayOutput written = write_display_gltf(input, folder, name);
   summary.file = written.file;
   summary.shows = vertex_lit ? "vertex light" : "pre-lit pages";
   summary.prelit_detail = vertex_lit ? 0 : light.pages.detail;
   summary.triangles = written.triangles;
+  summary.camera = written.camera;
   return summary;
 }
 
@@ -362,7 +366,7 @@ int run_bake(const radbake::BakeCommand& cmd, radbake::Team& team) {
     engine.probes_file = write_light_probes(result.probes, folder.path(), name);
   }
   stop_if_interrupted();
-  run.display = write_display(cmd, loaded.scene, atlas, result, folder.path(), name);
+  run.display = write_display(cmd, loaded, atlas, result, folder.path(), name);
   engine.display_exposure = run.display.exposure.exposure;
   engine.display_file = run.display.file;
   stop_if_interrupted();

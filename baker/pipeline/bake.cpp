@@ -524,6 +524,7 @@ BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& given
     report.light_probes = result.probes.probes.size();
     report.light_probe_spacing = result.probes.spacing;
   }
+  result.display_camera = clock.run("display camera", [&] { return display_camera(scene, surface, *tracer); });
   report.surfaces = surface_statistics(scene, surface, elements, result.irradiance);
 
   for (const AtlasPage& p : surface.pages) report.page_texels += size_t(p.width) * p.height;

@@ -8,6 +8,7 @@
 
 #include "baker/finish/finish.h"
 #include "baker/pipeline/plan.h"
+#include "baker/readings/display_camera.h"
 #include "baker/readings/glare.h"
 #include "baker/readings/light_probes.h"
 #include "baker/readings/luminance_view.h"
@@ -74,6 +75,7 @@ struct BakeResult {
   std::vector<Glare> glare;                        // per view
   LightProbes probes;                              // with BakeOptions::probes
   WorkPlane work_plane;                            // its storeys and rooms index `sensors`
+  DisplayCamera display_camera;                    // for a display file whose input has no camera
   BakeReport report;
 };
 

@@ -1,6 +1,7 @@
 #include "io/gltf/display_gltf.h"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -8,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "io/gltf/gltf_binary.h"
+#include "io/gltf/gltf_source.h"
 #include "io/lightmaps/lightmap_images.h"
 
 namespace radbake {
@@ -25,6 +27,65 @@ Vec2 transformed(const TextureTransform& t, Vec2 uv) {
   return {c * s.x - r * s.y + t.offset.x, r * s.x + c * s.y + t.offset.y};
 }
 
+// A node's own transform: its matrix, or T * R * S (glTF 2.0 section 5.25).
+Mat4 local_matrix(const tinygltf::Node& node) {
+  Mat4 m;
+  if (node.matrix.size() == 16) {
+    for (int i = 0; i < 16; ++i) m.m[i] = node.matrix[size_t(i)];
+    return m;
+  }
+  const std::vector<double> q = node.rotation.size() == 4 ? node.rotation : std::vector<double>{0, 0, 0, 1};
+  const std::vector<double> s = node.scale.size() == 3 ? node.scale : std::vector<double>{1, 1, 1};
+  const double x = q[0], y = q[1], z = q[2], w = q[3];
+  const double r[9] = {1 - 2 * (y * y + z * z), 2 * (x * y + z * w),     2 * (x * z - y * w),
+                       2 * (x * y - z * w),     1 - 2 * (x * x + z * z), 2 * (y * z + x * w),
+                       2 * (x * z + y * w),     2 * (y * z - x * w),     1 - 2 * (x * x + y * y)};
+  for (int col = 0; col < 3; ++col)
+    for (int row = 0; row < 3; ++row) m.m[col * 4 + row] = r[col * 3 + row] * s[size_t(col)];
+  for (size_t k = 0; k < 3 && node.translation.size() == 3; ++k) m.m[12 + k] = node.translation[k];
+  return m;
+}
+
+// The unit quaternion (x, y, z, w) of the rotation whose columns are `right`, `up` and `back`.
+json quaternion(Vec3 right, Vec3 up, Vec3 back) {
+  const double m00 = right.x, m10 = right.y, m20 = right.z, m01 = up.x, m11 = up.y, m21 = up.z, m02 = back.x,
+               m12 = back.y, m22 = back.z;
+  double x, y, z, w;
+  const double trace = m00 + m11 + m22;
+  if (trace > 0) {
+    const double s = 2 * std::sqrt(trace + 1);
+    w = s / 4, x = (m21 - m12) / s, y = (m02 - m20) / s, z = (m10 - m01) / s;
+  } else if (m00 > m11 && m00 > m22) {
+    const double s = 2 * std::sqrt(1 + m00 - m11 - m22);
+    w = (m21 - m12) / s, x = s / 4, y = (m01 + m10) / s, z = (m02 + m20) / s;
+  } else if (m11 > m22) {
+    const double s = 2 * std::sqrt(1 + m11 - m00 - m22);
+    w = (m02 - m20) / s, x = (m01 + m10) / s, y = s / 4, z = (m12 + m21) / s;
+  } else {
+    const double s = 2 * std::sqrt(1 + m22 - m00 - m11);
+    w = (m10 - m01) / s, x = (m02 + m20) / s, y = (m12 + m21) / s, z = s / 4;
+  }
+  const double n = std::sqrt(x * x + y * y + z * z + w * w);
+  return {x / n, y / n, z / n, w / n};
+}
+
+// A camera as glTF writes it, from tinygltf's reading (which gives 0 for an absent aspect ratio
+// or far plane).
+json camera_json(const tinygltf::Camera& c) {
+  json out = {{"type", c.type}};
+  if (!c.name.empty()) out["name"] = c.name;
+  if (c.type == "perspective") {
+    json p = {{"yfov", c.perspective.yfov}, {"znear", c.perspective.znear}};
+    if (c.perspective.aspectRatio > 0) p["aspectRatio"] = c.perspective.aspectRatio;
+    if (c.perspective.zfar > 0) p["zfar"] = c.perspective.zfar;
+    out["perspective"] = p;
+  } else {
+    out["orthographic"] = {{"xmag", c.orthographic.xmag}, {"ymag", c.orthographic.ymag},
+                           {"zfar", c.orthographic.zfar}, {"znear", c.orthographic.znear}};
+  }
+  return out;
+}
+
 // An input vertex attribute at a display vertex.
 template <typename T>
 T blend(const std::vector<T>& per_vertex, const std::vector<uint32_t>& source_vertex, const RefinedVertex& v) {
@@ -36,8 +97,8 @@ class DisplayWriter {
   explicit DisplayWriter(const DisplayInput& in) : in_(in), bin_(doc_, 0) {
     doc_["asset"] = {{"version", "2.0"}, {"generator", "radbake"}};
     doc_["extensionsUsed"] = json::array({"KHR_materials_unlit"});
-    for (const char* key : {"scenes", "nodes", "meshes", "materials", "textures", "images", "samplers", "accessors",
-                            "bufferViews", "buffers"})
+    for (const char* key : {"scenes", "nodes", "meshes", "materials", "textures", "images", "samplers", "cameras",
+                            "accessors", "bufferViews", "buffers"})
       doc_[key] = json::array();
   }
 
@@ -53,13 +114,14 @@ class DisplayWriter {
       add_instance(i);
       scene_nodes.push_back(doc_["nodes"].size() - 1);
     }
+    DisplayOutput out;
+    out.camera = add_cameras(scene_nodes);
     doc_["scenes"].push_back({{"name", "radbake display"}, {"nodes", scene_nodes}});
     doc_["scene"] = 0;
     describe();
-    for (const char* key : {"textures", "images", "samplers"})
+    for (const char* key : {"textures", "images", "samplers", "cameras"})
       if (doc_[key].empty()) doc_.erase(key);
     doc_["buffers"].push_back({{"byteLength", bin_.data().size()}});
-    DisplayOutput out;
     out.file = name + "_display.glb";
     out.triangles = triangles_;
     write_glb((std::filesystem::path(folder) / out.file).string());
@@ -67,6 +129,71 @@ class DisplayWriter {
   }
 
  private:
+  // The input's cameras in its displayed scene, each a root node placed where its node's world
+  // transform puts it (the geometry here is in world space); or, where there is none, the bake's.
+  // Returns what the file opens on, for the report.
+  std::string add_cameras(json& scene_nodes) {
+    size_t kept = 0, degenerate = 0;
+    std::string first;
+    if (in_.source) {
+      const tinygltf::Model& model = in_.source->model;
+      std::vector<int> roots;
+      if (!model.scenes.empty()) {
+        roots = model.scenes[size_t(std::max(model.defaultScene, 0))].nodes;
+      } else {
+        std::vector<char> is_child(model.nodes.size(), 0);
+        for (const tinygltf::Node& n : model.nodes)
+          for (int c : n.children) is_child[size_t(c)] = 1;
+        for (size_t i = 0; i < model.nodes.size(); ++i)
+          if (!is_child[i]) roots.push_back(int(i));
+      }
+      std::vector<std::pair<int, Mat4>> stack;
+      for (auto root = roots.rbegin(); root != roots.rend(); ++root) stack.push_back({*root, Mat4{}});
+      while (!stack.empty()) {
+        const auto [index, parent] = stack.back();
+        stack.pop_back();
+        const tinygltf::Node& node = model.nodes[size_t(index)];
+        const Mat4 world = parent * local_matrix(node);
+        if (node.camera >= 0) {
+          const json camera = camera_json(model.cameras[size_t(node.camera)]);
+          const std::string name = node.name.empty() ? "camera " + std::to_string(node.camera) : node.name;
+          if (add_camera(camera, name, {world.m[12], world.m[13], world.m[14]}, world.transform_direction({0, 0, -1}),
+                         world.transform_direction({0, 1, 0}), scene_nodes)) {
+            if (kept++ == 0) first = name;
+          } else {
+            ++degenerate;
+          }
+        }
+        for (auto child = node.children.rbegin(); child != node.children.rend(); ++child) stack.push_back({*child, world});
+      }
+    }
+    const std::string left_out =
+        degenerate > 0 ? " (" + std::to_string(degenerate) + " left out: their nodes' scale leaves no view direction)" : "";
+    if (kept > 0)
+      return "the input's " + (kept == 1 ? "camera '" + first + "'" : std::to_string(kept) + " cameras, first '" + first + "'") +
+             left_out;
+    if (!in_.camera) return "none" + left_out;
+    const DisplayCamera& c = *in_.camera;
+    const json camera = {{"type", "perspective"}, {"name", "radbake"},
+                         {"perspective", {{"yfov", c.yfov}, {"znear", c.znear}}}};
+    add_camera(camera, "radbake camera", {c.eye.x, c.eye.y, c.eye.z}, c.forward, {0, 1, 0}, scene_nodes);
+    return "added, the input has none" + left_out + ": " + c.why;
+  }
+
+  // A root node at `translation` looking along `forward` with `up` as near up as it can be. False
+  // when the two give no orientation.
+  bool add_camera(const json& camera, const std::string& name, const json& translation, Vec3 forward, Vec3 up,
+                  json& scene_nodes) {
+    const Vec3 right = cross(forward, up);
+    if (!(length(forward) > 0) || !(length(right) > 1e-6f * length(forward) * length(up))) return false;
+    const Vec3 f = normalize(forward), x = normalize(right), y = cross(x, f);
+    doc_["cameras"].push_back(camera);
+    doc_["nodes"].push_back({{"name", name}, {"camera", doc_["cameras"].size() - 1},
+                             {"translation", translation}, {"rotation", quaternion(x, y, -f)}});
+    scene_nodes.push_back(doc_["nodes"].size() - 1);
+    return true;
+  }
+
   void add_prelit_pages() {
     doc_["samplers"].push_back(sampler(kClampToEdge, kClampToEdge));
     for (size_t p = 0; p < in_.pages->pages.size(); ++p) {
@@ -157,7 +284,9 @@ class DisplayWriter {
       const Vec3 p = blend(inst.positions, lm.source_vertex, v);
       positions.insert(positions.end(), {p.x, p.y, p.z});
       if (!inst.normals.empty()) {
-        const Vec3 nrm = normalize(blend(inst.normals, lm.source_vertex, v));
+        Vec3 nrm = normalize(blend(inst.normals, lm.source_vertex, v));
+        // A triangle whose corners face opposite ways blends to no direction; glTF needs unit normals.
+        if (!(length(nrm) > 0.5f)) nrm = inst.normals[lm.source_vertex[v.corner[0]]];
         normals.insert(normals.end(), {nrm.x, nrm.y, nrm.z});
       }
     }
@@ -183,7 +312,9 @@ class DisplayWriter {
       for (size_t k = 0; k < n; ++k) {
         const RefinedVertex& v = mesh.vertices[k];
         if (textured) {
-          const Vec2 uv = transformed(ref.transform, blend(*set, lm.source_vertex, v));
+          Vec2 uv = transformed(ref.transform, blend(*set, lm.source_vertex, v));
+          // Huge coordinates under a large texture transform overflow; glTF's floats are finite.
+          if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) uv = {0, 0};
           uvs.insert(uvs.end(), {uv.x, uv.y});
         }
         Rgb seen = prelit_vertex(mesh.values[k]);

@@ -141,6 +141,7 @@ void write_report(const std::string& path, const RunInfo& run, const Scene& scen
                   {"median_lit_luminance_cd_m2", d.exposure.median_lit_luminance},
                   {"highlight_channel_cd_m2", d.exposure.highlight_channel},
                   {"triangles", d.triangles}};
+  if (!d.file.empty()) display["camera"] = d.camera;
   if (d.prelit_detail > 0) display["prelit_detail"] = d.prelit_detail;
   if (!refinement.empty()) display["vertex_light_vs_lightmap"] = refinement;
   json report = {

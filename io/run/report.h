@@ -21,6 +21,7 @@ struct DisplaySummary {
   int prelit_detail = 0;
   Exposure exposure;              // what both files record, and how it was metered
   size_t triangles = 0;
+  std::string camera;  // which camera the display file opens on, and why
   // Vertex light against the lightmap as the mesh is refined: (triangles, area-weighted RMS
   // difference relative to the mean light).
   std::vector<std::pair<size_t, double>> refinement;

@@ -1,0 +1,122 @@
+#include "baker/readings/display_camera.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "baker/readings/work_plane.h"
+#include "base/errors.h"
+
+namespace radbake {
+namespace {
+
+constexpr float kEyeHeight = 1.6f;  // metres: a standing eye
+constexpr int kViewRays = 8;        // per side of the grid of rays that judges a view
+
+// The share of a square grid of rays over the field of view, looking along `forward`, that
+// strikes a surface.
+float share_hit(const RayTracer& tracer, Vec3 eye, Vec3 forward, float yfov) {
+  const Vec3 right = normalize(cross(forward, {0, 1, 0})), up = cross(right, forward);
+  const float half = std::tan(0.5f * yfov);
+  int hits = 0;
+  for (int i = 0; i < kViewRays; ++i)
+    for (int j = 0; j < kViewRays; ++j) {
+      const float u = half * (2 * (float(i) + 0.5f) / kViewRays - 1), v = half * (2 * (float(j) + 0.5f) / kViewRays - 1);
+      hits += !tracer.intersect(eye, normalize(forward + right * u + up * v), 0, INFINITY).missed();
+    }
+  return float(hits) / float(kViewRays * kViewRays);
+}
+
+struct Box {
+  Vec3 lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
+};
+
+Box bounds(const Surface& surface) {
+  Box b;
+  for (const Vec3& c : surface.corners)
+    b.lo = {std::min(b.lo.x, c.x), std::min(b.lo.y, c.y), std::min(b.lo.z, c.z)},
+    b.hi = {std::max(b.hi.x, c.x), std::max(b.hi.y, c.y), std::max(b.hi.z, c.z)};
+  return b;
+}
+
+DisplayCamera outside(const Box& box, const std::string& reason) {
+  const Vec3 lo = box.lo, hi = box.hi;
+  DisplayCamera camera;
+  const Vec3 centre = (lo + hi) * 0.5f;
+  const float radius = std::max(0.5f * length(hi - lo), 1e-3f);
+  const float distance = radius / std::sin(0.5f * camera.yfov);
+  camera.forward = normalize(Vec3{0, -0.4f, -1});
+  camera.eye = centre - camera.forward * distance;
+  camera.znear = std::max(1e-3f, 0.01f * radius);
+  camera.why = reason + ": outside, from +Z, the bounding sphere filling the field of view";
+  return camera;
+}
+
+}  // namespace
+
+DisplayCamera display_camera(const Scene& scene, const Surface& surface, const RayTracer& tracer) {
+  const Box box = bounds(surface);
+  if (surface.corners.empty()) return outside({{0, 0, 0}, {0, 0, 0}}, "an empty scene");
+  const float wide = std::max(box.hi.x - box.lo.x, box.hi.z - box.lo.z);
+  WorkPlaneOptions options;
+  options.enabled = true;
+  options.height = std::min(kEyeHeight, 0.5f * (box.hi.y - box.lo.y));
+  options.spacing = std::max(double(wide) / 24, 1e-3);  // a few hundred points, enough to find the rooms
+  WorkPlane plane;
+  try {
+    plane = work_plane(scene, surface, tracer, options);
+  } catch (const InputError&) {
+    return outside(box, "no floor is enclosed");
+  }
+  if (plane.rooms.empty()) return outside(box, "no floor is enclosed");
+  const WorkPlaneRoom* largest = &plane.rooms[0];
+  for (const WorkPlaneRoom& room : plane.rooms)
+    if (room.sensors.size() > largest->sensors.size()) largest = &room;
+  Vec3 centroid{};
+  for (int32_t k : largest->sensors) centroid = centroid + plane.sensors[size_t(k)].position;
+  centroid = centroid * (1.0f / float(largest->sensors.size()));
+
+  DisplayCamera best;
+  float best_score = -1;
+  const Vec3 axes[4] = {{0, 0, 1}, {0, 0, -1}, {1, 0, 0}, {-1, 0, 0}};
+  float longest = 0;
+  float extent[4];
+  for (int a = 0; a < 4; ++a) {
+    float near = INFINITY, far = -INFINITY;
+    for (int32_t k : largest->sensors) {
+      const float along = dot(plane.sensors[size_t(k)].position, axes[a]);
+      near = std::min(near, along), far = std::max(far, along);
+    }
+    extent[a] = far - near;
+    longest = std::max(longest, extent[a]);
+  }
+  for (int a = 0; a < 4; ++a) {
+    // At the room's near end, on its centre line: the room's own point nearest there (an L-shaped
+    // room's centroid may lie outside it).
+    const Vec3 wanted = centroid - axes[a] * (0.5f * extent[a]);
+    Vec3 eye = centroid;
+    float nearest = INFINITY;
+    for (int32_t k : largest->sensors) {
+      const Vec3 p = plane.sensors[size_t(k)].position;
+      if (length(p - wanted) < nearest) nearest = length(p - wanted), eye = p;
+    }
+    const float score = share_hit(tracer, eye, axes[a], best.yfov) + (1 - share_hit(tracer, eye, -axes[a], best.yfov)) +
+                        extent[a] / std::max(longest, 1e-6f);
+    if (score > best_score) best_score = score, best.eye = eye, best.forward = axes[a];
+  }
+  // Then back, to see more of the room: towards the wall behind (stopping short of it), or, where
+  // the room is open behind (a set's missing wall), to the scene's bounds.
+  const Vec3 d = best.forward;
+  const Hit behind = tracer.intersect(best.eye, -d, 0, INFINITY);
+  const float to_bounds = dot(best.eye, d) - dot(d.x + d.y + d.z > 0 ? box.lo : box.hi, d);
+  best.eye = best.eye - d * (0.9f * std::min(behind.missed() ? INFINITY : behind.distance, to_bounds));
+  best.in_room = true;
+  best.znear = std::max(1e-3f, 0.002f * longest);
+  char why[160];
+  std::snprintf(why, sizeof why, "inside the largest enclosed region (%zu of %zu work-plane points, %.3g m across), %.3g m above its floor",
+                largest->sensors.size(), plane.sensors.size(), double(longest), options.height);
+  best.why = why;
+  return best;
+}
+
+}  // namespace radbake
