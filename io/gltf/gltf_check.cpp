@@ -115,6 +115,7 @@ class DocumentCheck {
     each("meshes", [&](json& m, const std::string& at) { mesh(m, at); });
     each("materials", [&](json& m, const std::string& at) { material(m, at); });
     each("nodes", [&](json& n, const std::string& at) { node(n, at); });
+    skin_use();
     each("scenes", [&](json& s, const std::string& at) {
       index_list(s, "nodes", at, count("nodes"), false);
       common(s, at, Owner::Other);
@@ -386,15 +387,53 @@ class DocumentCheck {
     } else if (name == "KHR_materials_emissive_strength") {
       number(e, "emissiveStrength", at, 0, INFINITY, 1);
     } else if (name.compare(0, 14, "KHR_materials_") == 0) {
-      // Their schemas share a shape: *Factor numbers (or colours) and *Texture texture references.
+      // Their schemas share a shape: *Factor numbers (or colours), a few other numbers, and
+      // *Texture texture references.
       std::vector<std::string> keys;
       for (auto it = e.begin(); it != e.end(); ++it) keys.push_back(it.key());
       for (const std::string& key : keys) {
         if (ends_with(key, "Texture")) texture_info(e, key, at);
-        else if (ends_with(key, "Factor") && !e[key].is_number()) numbers(e, key, at, 0, 0, INFINITY);
-        else if (ends_with(key, "Factor")) number(e, key, at, 0, INFINITY, 0);
+        else if (const MaterialNumber* range = material_number(key)) material_value(e, key, at, *range);
       }
     }
+  }
+
+  // A number of a material extension, and its schema's range: factors in [0, 1] unless listed.
+  // The loader reads some of them (transmission, ior), viewers all: out of range they are clamped,
+  // of another type dropped (the extension's default applies), each with a warning.
+  struct MaterialNumber {
+    double lo, hi;
+  };
+  static const MaterialNumber* material_number(const std::string& key) {
+    static const MaterialNumber kFactor = {0, 1};
+    static const std::map<std::string, MaterialNumber> kOthers = {
+        {"thicknessFactor", {0, INFINITY}},   {"specularColorFactor", {0, INFINITY}}, {"attenuationColor", {0, 1}},
+        {"ior", {1, INFINITY}},               {"iridescenceIor", {1, INFINITY}},      {"dispersion", {0, INFINITY}},
+        {"iridescenceThicknessMinimum", {0, INFINITY}}, {"iridescenceThicknessMaximum", {0, INFINITY}},
+        {"anisotropyStrength", {0, 1}},       {"anisotropyRotation", {-INFINITY, INFINITY}}};
+    auto it = kOthers.find(key);
+    if (it != kOthers.end()) return &it->second;
+    return ends_with(key, "Factor") ? &kFactor : nullptr;
+  }
+
+  void material_value(json& e, const std::string& key, const std::string& at, const MaterialNumber& range) {
+    json& v = e[key];
+    const bool numeric = v.is_number() || (v.is_array() && !v.empty() && std::all_of(v.begin(), v.end(), [](const json& c) {
+                                              return c.is_number();
+                                            }));
+    if (!numeric) return drop(e, key, at, {child(at, key), v.is_array() ? "must be an array of numbers" : "must be a number"});
+    // KHR_materials_ior also allows 0 (glTF's "no refraction"); below 1 is no refractive index.
+    const bool ior_zero = key == "ior" && v == 0;
+    json clamped = v.is_array() ? v : json::array({v});
+    if (!ior_zero)
+      for (json& c : clamped) c = std::clamp(c.get<double>(), range.lo, range.hi);
+    if (!v.is_array()) clamped = json(clamped[0]);
+    if (clamped == v) return;
+    warnings_.push_back("clamped " + child(at, key) + " from " + v.dump() + " to " + clamped.dump() + " (its range is " +
+                        shown(range.lo) + (std::isinf(range.hi) ? " up" : " to " + shown(range.hi)) +
+                        (key == "ior" ? ", or 0)" : ")"));
+    v = clamped;
+    changed_ = true;
   }
 
   // --- the document ----------------------------------------------------------------------------
@@ -543,8 +582,10 @@ class DocumentCheck {
       if (!c.is_object()) violate(cp, "must be an object");
       index(c, "sampler", cp, samplers->size(), "the animation's samplers", true);
       json* target = object(c, "target", cp, true);
-      index(*target, "node", child(cp, "target"), count("nodes"), "/nodes");
-      text(*target, "path", child(cp, "target"), {"translation", "rotation", "scale", "weights"}, true);
+      const int64_t node = index(*target, "node", child(cp, "target"), count("nodes"), "/nodes");
+      if (text(*target, "path", child(cp, "target"), {"translation", "rotation", "scale", "weights"}, true) == "weights" &&
+          node >= 0 && lost_targets(node))
+        violate(child(cp, "target"), "animates the weights of a mesh whose empty morph targets were dropped");
     }
     common(a, at, Owner::Other);
   }
@@ -627,9 +668,50 @@ class DocumentCheck {
       if (!first)
         for (auto s = it->second.begin(); s != it->second.end();) s = sets.count(*s) ? std::next(s) : it->second.erase(s);
     }
+    // After the primitives: dropping moves m's members, and `primitives` with them.
+    dropped_targets_.push_back(drop_empty_targets(m, at));
+    if (!dropped_targets_.back().empty()) targets = m["primitives"].back().value("targets", json::array()).size();
     morph_targets_.push_back(targets);
     droppable(m, "weights", at, [&] { weights(m, at, targets); });
     common(m, at, Owner::Other);
+  }
+
+  // Empty morph targets move nothing (the validator's EMPTY_ENTITY). Target t goes from every
+  // primitive when it is empty in one, so the primitives keep equal counts, and its weight with it.
+  // Returns the indices dropped.
+  std::set<size_t> drop_empty_targets(json& m, const std::string& at) {
+    std::set<size_t> empty;
+    std::string example;
+    json& primitives = m["primitives"];
+    for (size_t k = 0; k < primitives.size(); ++k)
+      for (size_t t = 0; t < primitives[k].value("targets", json::array()).size(); ++t)
+        if (primitives[k]["targets"][t].empty() && empty.insert(t).second && example.empty())
+          example = child(child(child(child(at, "primitives"), k), "targets"), t);
+    if (empty.empty()) return empty;
+    for (json& prim : primitives) {
+      if (!prim.contains("targets")) continue;
+      erase_elements(prim["targets"], empty);
+      if (prim["targets"].empty()) prim.erase("targets");
+    }
+    if (m.contains("weights") && m["weights"].is_array()) erase_elements(m["weights"], empty);
+    if (m.contains("weights") && m["weights"].empty()) m.erase("weights");
+    warnings_.push_back("dropped " + std::to_string(empty.size()) + " empty morph targets of " + at +
+                        " from the output, with their weights (" + example + " is empty)");
+    changed_ = true;
+    return empty;
+  }
+
+  static void erase_elements(json& list, const std::set<size_t>& indices) {
+    json kept = json::array();
+    for (size_t i = 0; i < list.size(); ++i)
+      if (!indices.count(i)) kept.push_back(std::move(list[i]));
+    list = std::move(kept);
+  }
+
+  // Whether node `n`'s mesh lost morph targets as empty (so its weights have fewer entries).
+  bool lost_targets(int64_t n) const {
+    const json& node = doc_["nodes"][size_t(n)];
+    return node.contains("mesh") && !dropped_targets_[node["mesh"].get<size_t>()].empty();
   }
 
   const std::string& accessor_type(int64_t accessor) const {
@@ -727,8 +809,55 @@ class DocumentCheck {
     if (!q.empty() && std::fabs(std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]) - 1) > 4e-6)
       violate(child(at, "rotation"), "must be a unit quaternion");
     numbers(n, "scale", at, 3, -INFINITY, INFINITY);
+    if (mesh >= 0 && n.contains("weights") && n["weights"].is_array() &&
+        n["weights"].size() == morph_targets_[size_t(mesh)] + dropped_targets_[size_t(mesh)].size()) {
+      erase_elements(n["weights"], dropped_targets_[size_t(mesh)]);
+      if (n["weights"].empty()) n.erase("weights");
+    }
     droppable(n, "weights", at, [&] { weights(n, at, mesh >= 0 ? morph_targets_[size_t(mesh)] : 0); });
     common(n, at, Owner::Node);
+  }
+
+  // A mesh moves with a skin when every primitive has joints and every node showing it has a skin
+  // (the validator's NODE_SKIN_WITH_NON_SKINNED_MESH and NODE_SKINNED_MESH_WITHOUT_SKIN). Where that
+  // fails, the mesh's joints and weights go, then the skins of nodes whose mesh has none (radbake
+  // bakes a skinned mesh where its node puts it, unposed, so nothing it baked moves with the skin).
+  void skin_use() {
+    if (!doc_.contains("nodes")) return;
+    json& nodes = doc_["nodes"];
+    auto skinning = [](const std::string& name) { return name.rfind("JOINTS_", 0) == 0 || name.rfind("WEIGHTS_", 0) == 0; };
+    std::map<int64_t, Violation> unskinned;  // mesh -> why
+    for (size_t n = 0; n < nodes.size(); ++n) {
+      if (!nodes[n].contains("mesh")) continue;
+      const int64_t mesh = nodes[n]["mesh"].get<int64_t>();
+      size_t with_joints = 0, primitives = 0;
+      for (const json& prim : doc_["meshes"][size_t(mesh)]["primitives"]) {
+        ++primitives;
+        with_joints += prim["attributes"].contains("JOINTS_0");
+      }
+      if (with_joints == 0) continue;
+      if (with_joints < primitives) unskinned.emplace(mesh, Violation{child("/meshes", size_t(mesh)), "has primitives without JOINTS_0"});
+      else if (!nodes[n].contains("skin")) unskinned.emplace(mesh, Violation{child("/nodes", n), "shows the mesh without a skin"});
+    }
+    for (const auto& [mesh, why] : unskinned) {
+      const std::string at = child("/meshes", size_t(mesh));
+      json& primitives = doc_["meshes"][size_t(mesh)]["primitives"];
+      for (size_t k = 0; k < primitives.size(); ++k) {
+        json& attributes = primitives[k]["attributes"];
+        std::vector<std::string> names;
+        for (auto it = attributes.begin(); it != attributes.end(); ++it)
+          if (skinning(it.key())) names.push_back(it.key());
+        for (const std::string& name : names)
+          drop(attributes, name, child(child(child(at, "primitives"), k), "attributes"), why);
+      }
+    }
+    for (size_t n = 0; n < nodes.size(); ++n) {
+      if (!nodes[n].contains("skin") || !nodes[n].contains("mesh")) continue;
+      const json& primitives = doc_["meshes"][nodes[n]["mesh"].get<size_t>()]["primitives"];
+      if (std::none_of(primitives.begin(), primitives.end(), [](const json& p) { return p["attributes"].contains("JOINTS_0"); }))
+        drop(nodes[n], "skin", child("/nodes", n), {child(child("/meshes", nodes[n]["mesh"].get<size_t>()), "primitives"),
+                                                     "have no joints for the skin to move"});
+    }
   }
 
   // extensionsUsed lists every extension the file uses, once; extensionsRequired only used ones.
@@ -791,6 +920,7 @@ class DocumentCheck {
   std::vector<int64_t> camera_renumbering_, skin_renumbering_;
   std::map<int64_t, std::set<int64_t>> texcoords_of_material_;
   std::vector<size_t> morph_targets_;  // per mesh
+  std::vector<std::set<size_t>> dropped_targets_;  // per mesh: the empty morph targets dropped
   size_t light_count_ = 0;
 };
 
