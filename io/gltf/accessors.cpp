@@ -137,4 +137,16 @@ std::vector<uint32_t> accessor_indices(const tinygltf::Model& model, int index) 
   return out;
 }
 
+std::vector<uint32_t> triangle_list(const std::vector<uint32_t>& idx, int mode) {
+  std::vector<uint32_t> tri;
+  if (mode == TINYGLTF_MODE_TRIANGLES) {
+    tri.assign(idx.begin(), idx.begin() + long(idx.size() / 3 * 3));
+  } else if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+    for (size_t i = 0; i + 2 < idx.size(); ++i) tri.insert(tri.end(), {idx[i], idx[i + 1 + i % 2], idx[i + 2 - i % 2]});
+  } else if (mode == TINYGLTF_MODE_TRIANGLE_FAN) {
+    for (size_t i = 1; i + 1 < idx.size(); ++i) tri.insert(tri.end(), {idx[i], idx[i + 1], idx[0]});
+  }
+  return tri;
+}
+
 }  // namespace radbake

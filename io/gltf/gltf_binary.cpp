@@ -30,12 +30,14 @@ void add_bounds(json& accessor, const std::vector<uint8_t>& bytes, size_t count,
   for (size_t i = 0; i < count; ++i)
     for (size_t c = 0; c < n; ++c) {
       double v = component(&bytes[(i * n + c) * cs], component_type);
+      if (!std::isfinite(v)) continue;  // JSON has no NaN or infinity (nlohmann would write null)
       lo[c] = std::min(lo[c], v);
       hi[c] = std::max(hi[c], v);
     }
   accessor["min"] = json::array();
   accessor["max"] = json::array();
   for (size_t c = 0; c < n; ++c) {
+    if (lo[c] > hi[c]) lo[c] = hi[c] = 0;
     accessor["min"].push_back(component_type == TINYGLTF_COMPONENT_TYPE_FLOAT ? json(float(lo[c])) : json(lo[c]));
     accessor["max"].push_back(component_type == TINYGLTF_COMPONENT_TYPE_FLOAT ? json(float(hi[c])) : json(hi[c]));
   }

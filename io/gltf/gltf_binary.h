@@ -13,7 +13,8 @@ constexpr int kArrayBuffer = 34962, kElementArrayBuffer = 34963;
 constexpr int kUnsignedShort = 5123, kUnsignedInt = 5125, kFloat = 5126;
 
 // min and max of each component, written as values of the component type (floats as the float
-// values themselves, so validators compare like with like).
+// values themselves, so validators compare like with like). NaN and infinities are left out (a
+// component with no finite value gets 0): the bounds are never non-finite.
 void add_bounds(nlohmann::ordered_json& accessor, const std::vector<uint8_t>& bytes, size_t count, int component_type);
 
 class BinaryWriter {

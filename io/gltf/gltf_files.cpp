@@ -163,9 +163,10 @@ uint32_t big_endian(const unsigned char* p, int n) {
   return v;
 }
 
+const unsigned char kPng[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};  // a PNG's first bytes
+
 // Width and height from a PNG's IHDR or a JPEG's start-of-frame, read before anything is decoded.
 bool image_size(const unsigned char* bytes, size_t size, uint64_t* width, uint64_t* height) {
-  static const unsigned char kPng[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
   if (size >= 24 && std::memcmp(bytes, kPng, 8) == 0 && std::memcmp(bytes + 12, "IHDR", 4) == 0) {
     *width = big_endian(bytes + 16, 4);
     *height = big_endian(bytes + 20, 4);
@@ -198,6 +199,7 @@ bool image_size(const unsigned char* bytes, size_t size, uint64_t* width, uint64
 bool load_image(tinygltf::Image* image, const int index, std::string*, std::string* warn, int req_width,
                 int req_height, const unsigned char* bytes, int size, void* user) {
   FileAccess& access = *static_cast<FileAccess*>(user);
+  if (index >= 0 && size_t(index) < access.image_types.size()) access.image_types[size_t(index)] = image_type(bytes, size_t(size));
   uint64_t width = 0, height = 0;
   if (!image_size(bytes, size_t(size), &width, &height)) return true;
   const std::string pointer = "/images/" + std::to_string(index);
@@ -223,6 +225,13 @@ bool load_image(tinygltf::Image* image, const int index, std::string*, std::stri
 }
 
 }  // namespace
+
+std::string image_type(const unsigned char* bytes, size_t size) {
+  if (size >= 8 && std::memcmp(bytes, kPng, 8) == 0) return "image/png";
+  if (size >= 3 && bytes[0] == 0xff && bytes[1] == 0xd8 && bytes[2] == 0xff) return "image/jpeg";
+  if (size >= 12 && std::memcmp(bytes, "RIFF", 4) == 0 && std::memcmp(bytes + 8, "WEBP", 4) == 0) return "image/webp";
+  return "";
+}
 
 FileAccess resolve_files(const json& doc, const std::string& file, const std::string& base_dir, bool allow_external) {
   FileAccess access;
@@ -251,6 +260,7 @@ FileAccess resolve_files(const json& doc, const std::string& file, const std::st
   }
   const json& images = doc.contains("images") ? doc["images"] : json::array();
   access.image_files.resize(images.size());
+  access.image_types.resize(images.size());
   for (size_t i = 0; i < images.size(); ++i) {
     if (!images[i].contains("uri")) continue;
     const std::string uri = images[i]["uri"].get<std::string>();

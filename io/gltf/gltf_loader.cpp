@@ -10,6 +10,8 @@
 #include "base/errors.h"
 #include "io/gltf/gltf_check.h"
 #include "io/gltf/gltf_source.h"
+#include "io/gltf/image_repair.h"
+#include "io/gltf/vertex_repair.h"
 
 namespace radbake {
 namespace {
@@ -144,8 +146,8 @@ Wrap wrap_mode(int gl) {
 
 class SceneBuilder {
  public:
-  SceneBuilder(const tinygltf::Model& model, Scene& scene, const std::string& file)
-      : model_(model), scene_(scene), file_(file) {}
+  SceneBuilder(const GltfSource& source, Scene& scene, const std::string& file)
+      : source_(source), model_(source.model), scene_(scene), file_(file) {}
 
   void build() {
     check_required_extensions();
@@ -280,7 +282,6 @@ class SceneBuilder {
         inst.positions[v] = world.transform_point(local);
         check_placed(inst.positions[v], node_pointer(node_index), "vertex " + std::to_string(v) + " of its mesh");
       }
-      read_normals(prim, world, inst, where);
       read_texcoords(prim, inst);
       if (inst.lightmap_uvs()) inst.lightmap_image = lightmap_image(prim.material);
       // A primitive radbake baked before holds that bake's light in COLOR_0 when the record says
@@ -302,36 +303,29 @@ class SceneBuilder {
         indices.resize(vertex_count);
         for (size_t i = 0; i < vertex_count; ++i) indices[i] = uint32_t(i);
       }
-      inst.triangles = to_triangle_list(indices, mode, where);
+      if (mode == TINYGLTF_MODE_TRIANGLES && indices.size() % 3)
+        scene_.warnings.push_back(where + ": index count is not a multiple of 3; the remainder is ignored");
+      inst.triangles = triangle_list(indices, mode);
+      read_normals(prim, world, p, inst, where);
       scene_.instances.push_back(std::move(inst));
     }
   }
 
-  std::vector<uint32_t> to_triangle_list(const std::vector<uint32_t>& idx, int mode, const std::string& where) {
-    std::vector<uint32_t> tri;
-    if (mode == TINYGLTF_MODE_TRIANGLES) {
-      if (idx.size() % 3) scene_.warnings.push_back(where + ": index count is not a multiple of 3; the remainder is ignored");
-      tri.assign(idx.begin(), idx.begin() + long(idx.size() / 3 * 3));
-    } else if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
-      for (size_t i = 0; i + 2 < idx.size(); ++i) {  // glTF 2.0 section 3.7.2.1: keep the winding
-        tri.insert(tri.end(), {idx[i], idx[i + 1 + i % 2], idx[i + 2 - i % 2]});
-      }
-    } else {
-      for (size_t i = 1; i + 1 < idx.size(); ++i) tri.insert(tri.end(), {idx[i], idx[i + 1], idx[0]});
-    }
-    return tri;
-  }
-
-  void read_normals(const tinygltf::Primitive& prim, const Mat4& world, MeshInstance& inst, const std::string& where) {
+  // Normals that are not unit vectors are repaired as the writer repairs them (io/gltf/vertex_repair.h,
+  // which warns naming the attribute), so the bake shades what the output carries. `local` holds
+  // the positions in the mesh's space.
+  void read_normals(const tinygltf::Primitive& prim, const Mat4& world, const std::vector<float>& local,
+                    MeshInstance& inst, const std::string& where) {
     auto it = prim.attributes.find("NORMAL");
     if (it == prim.attributes.end()) return;
     int components;
     std::vector<float> n = accessor_floats(model_, it->second, &components);
+    repair_normals(n, local, inst.triangles);
     inst.normals.resize(inst.positions.size());
     for (size_t v = 0; v < inst.normals.size(); ++v) {
       Vec3 w = normalize(world.transform_normal({n[3 * v], n[3 * v + 1], n[3 * v + 2]}));
       if (!is_finite(w) || length(w) < 0.5f) {
-        scene_.warnings.push_back(where + ": NORMAL has zero or non-finite vectors; face normals are used instead");
+        scene_.warnings.push_back(where + ": its node's transform flattens its normals; face normals are used instead");
         inst.normals.clear();
         return;
       }
@@ -349,6 +343,9 @@ class SceneBuilder {
       inst.texcoords.resize(size_t(set) + 1);
       auto& out = inst.texcoords[size_t(set)];
       out.resize(inst.positions.size());
+      // NaN or infinite coordinates read as 0, as the writer repairs them (io/gltf/vertex_repair.h,
+      // which warns naming the attribute).
+      for (float& c : uv) c = std::isfinite(c) ? c : 0.0f;
       for (size_t v = 0; v < out.size(); ++v) out[v] = {uv[2 * v], uv[2 * v + 1]};
     }
   }
@@ -488,7 +485,11 @@ class SceneBuilder {
       bool decoded = in.width > 0 && in.height > 0 && in.component == 4 && (in.bits == 8 || in.bits == 16) &&
                      in.image.size() == size_t(in.width) * size_t(in.height) * 4 * size_t(in.bits / 8);
       if (!decoded) {
-        scene_.warnings.push_back("image '" + out.name + "' could not be decoded; textures using it are ignored");
+        // The one warning about the image: the writer leaves out what unwritable_image names.
+        const std::string why = unwritable_image(source_, i), image = "/images/" + std::to_string(i) + " ('" + out.name + "')";
+        scene_.warnings.push_back((why.empty() ? image + " is WebP, which radbake does not decode"
+                                               : "dropped " + image + " from the output (" + why + ")") +
+                                  "; the bake ignores textures using it");
       } else {
         out.width = in.width;
         out.height = in.height;
@@ -564,6 +565,7 @@ class SceneBuilder {
     }
   }
 
+  const GltfSource& source_;
   const tinygltf::Model& model_;
   Scene& scene_;
   const std::string& file_;
@@ -643,9 +645,10 @@ LoadedScene load_gltf(const std::string& path, const LoadOptions& options) {
   if (!access.error.empty()) throw InputError(access.error);
   if (!ok) throw InputError(clipped(path) + ": not a glTF file radbake can read (tinygltf: '" + clipped(one_line(err)) + "')");
   src->image_files = std::move(access.image_files);
+  src->image_types = std::move(access.image_types);
 
   if (!warn.empty()) out.scene.warnings.push_back(one_line(warn));
-  SceneBuilder(src->model, out.scene, path).build();
+  SceneBuilder(*src, out.scene, path).build();
   out.source = std::move(src);
   out.estimate = estimate;
   return out;

@@ -139,21 +139,26 @@ void prune_unused_objects(json& doc, std::vector<std::string>& warnings) {
     each_reference(doc, [&](const std::string& k, json& index) {
       if (k == kind && index.get<int64_t>() >= 0 && size_t(index.get<int64_t>()) < used.size()) used[size_t(index.get<int64_t>())] = 1;
     });
-    if (std::all_of(used.begin(), used.end(), [](uint8_t u) { return u; })) continue;
-    std::vector<int64_t> renumbered(objects.size(), -1);
-    json kept = json::array();
-    for (size_t i = 0; i < objects.size(); ++i)
-      if (used[i]) {
-        renumbered[i] = int64_t(kept.size());
-        kept.push_back(std::move(objects[i]));
-      }
-    each_reference(doc, [&](const std::string& k, json& index) {
-      if (k == kind && index.get<int64_t>() >= 0 && size_t(index.get<int64_t>()) < renumbered.size())
-        index = renumbered[size_t(index.get<int64_t>())];
-    });
-    if (kept.empty()) doc.erase(kind);
-    else objects = std::move(kept);
+    remove_objects(doc, kind, used);
   }
+}
+
+void remove_objects(json& doc, const char* kind, const std::vector<uint8_t>& keep) {
+  if (std::all_of(keep.begin(), keep.end(), [](uint8_t k) { return k; })) return;
+  json& objects = doc[kind];
+  std::vector<int64_t> renumbered(objects.size(), -1);
+  json kept = json::array();
+  for (size_t i = 0; i < objects.size(); ++i)
+    if (keep[i]) {
+      renumbered[i] = int64_t(kept.size());
+      kept.push_back(std::move(objects[i]));
+    }
+  each_reference(doc, [&](const std::string& k, json& index) {
+    if (k == kind && index.get<int64_t>() >= 0 && size_t(index.get<int64_t>()) < renumbered.size())
+      index = renumbered[size_t(index.get<int64_t>())];
+  });
+  if (kept.empty()) doc.erase(kind);
+  else objects = std::move(kept);
 }
 
 }  // namespace radbake

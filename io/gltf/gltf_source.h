@@ -24,6 +24,7 @@ struct GltfSource {
   std::string json_text;          // the JSON document (the JSON chunk of a .glb)
   std::vector<uint8_t> glb_bin;   // the BIN chunk of a .glb
   std::vector<std::string> image_files;  // per image: the file its URI resolved to, empty if none
+  std::vector<std::string> image_types;  // per image: its bytes' MIME type (image_type), empty if unread
 };
 
 // The external files a document's URIs name, resolved inside the scene's folder: the only files
@@ -32,6 +33,7 @@ struct FileAccess {
   std::map<std::string, std::string> by_uri;   // tinygltf's decoding of a URI -> canonical path
   std::set<std::string> allowed;               // canonical paths
   std::vector<std::string> image_files;        // per image, as GltfSource::image_files
+  std::vector<std::string> image_types;        // per image, as GltfSource::image_types
   // Image decoding, checked as tinygltf hands each image over.
   std::string file;
   uint64_t max_memory_bytes = 0;
@@ -45,6 +47,10 @@ FileAccess resolve_files(const nlohmann::ordered_json& doc, const std::string& f
 // Points tinygltf's file system and image decoding at `access`, which must outlive the load.
 void restrict_file_access(tinygltf::TinyGLTF& loader, FileAccess& access);
 
+// The MIME type of an image file's bytes, from their signature: image/png, image/jpeg or
+// image/webp (the formats glTF and EXT_texture_webp allow), or empty for anything else.
+std::string image_type(const unsigned char* bytes, size_t size);
+
 // Throws InputError naming the estimate and the option to raise when it passes a limit.
 void check_budget(const ResourceEstimate& estimate, const LoadOptions& options, const std::string& file);
 
@@ -56,6 +62,10 @@ std::vector<uint8_t> accessor_bytes(const tinygltf::Model& model, int accessor_i
 std::vector<float> accessor_floats(const tinygltf::Model& model, int accessor_index, int* components);
 
 std::vector<uint32_t> accessor_indices(const tinygltf::Model& model, int accessor_index);
+
+// Triangles (three indices each) of a primitive drawn as triangles, a strip or a fan (glTF 2.0
+// section 3.7.2.1, windings kept); none for points and lines. A list's incomplete last triangle is left out.
+std::vector<uint32_t> triangle_list(const std::vector<uint32_t>& indices, int mode);
 
 size_t component_count(int type);
 size_t component_size(int component_type);

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <set>
 #include <nlohmann/json.hpp>
 #include <tuple>
@@ -16,6 +17,8 @@
 #include "io/gltf/gltf_binary.h"
 #include "io/gltf/gltf_prune.h"
 #include "io/gltf/gltf_source.h"
+#include "io/gltf/image_repair.h"
+#include "io/gltf/vertex_repair.h"
 #include "io/lightmaps/light_probe_outputs.h"
 
 namespace radbake {
@@ -59,11 +62,15 @@ class Writer {
       for (Rgb c : mesh) color_scale_ = std::max(color_scale_, max_component(c));
     for (const char* key : {"accessors", "bufferViews", "buffers", "meshes", "materials", "images", "textures", "samplers"})
       if (!doc_.contains(key)) doc_[key] = json::array();
+    // Both drop what they cannot repair, so before the copies below.
+    repairs_.emplace(src_.model, doc_, out_.warnings);
+    const std::vector<uint8_t> written_images = repair_images(doc_, src_, out_.warnings);
     original_meshes_ = doc_["meshes"];
     original_materials_ = doc_["materials"];
     relocate_buffers();
     correct_bounds();
-    copy_images();
+    copy_images(written_images);
+    remove_objects(doc_, "images", written_images);
     const int lightmap_buffer = int(doc_["buffers"].size());
     BinaryWriter bin(doc_, lightmap_buffer);
     add_lightmap_textures();
@@ -71,6 +78,7 @@ class Writer {
     for (const MeshInstance& inst : scene_.instances)
       if (inst.back_of >= 0) has_back_[size_t(inst.back_of)] = 1;
     for (size_t i = 0; i < scene_.instances.size(); ++i) rewrite_primitive(i, bin);
+    write_repaired_attributes(bin);
     std::string bin_name = name_ + "_lightmap.bin";
     doc_["buffers"].push_back({{"uri", bin_name}, {"byteLength", bin.data().size()}});
     write_bytes(folder_ / bin_name, bin.data().data(), bin.data().size());
@@ -125,7 +133,7 @@ class Writer {
       }
     for (size_t i = 0; i < src_.model.accessors.size(); ++i) {
       json& a = doc_["accessors"][i];
-      if (!needs_bounds(i) || a["count"].get<size_t>() == 0) continue;
+      if (!needs_bounds(i) || a["count"].get<size_t>() == 0 || repairs_->replaces(int(i))) continue;
       size_t element_size;
       std::vector<uint8_t> bytes;
       try {
@@ -158,14 +166,16 @@ class Writer {
   }
 
   // Only the files the loader resolved (inside the scene's folder, unless external files were
-  // allowed); an image it did not find keeps its URI and is reported.
-  void copy_images() {
+  // allowed), and only images the engine file may carry (`written`, from repair_images).
+  void copy_images(const std::vector<uint8_t>& written) {
     json& images = doc_["images"];
     for (size_t i = 0; i < images.size(); ++i) {
       std::string uri = images[i].value("uri", "");
-      if (uri.empty() || is_data_uri(uri)) continue;
+      if (uri.empty() || is_data_uri(uri) || !written[i]) continue;
       const fs::path from = src_.image_files[i];
-      std::string file = name_ + "_image" + std::to_string(i) + from.extension().string();
+      // Named for what the bytes are (a PNG named .webp is repaired as a PNG).
+      const std::string& type = src_.image_types[i];
+      std::string file = name_ + "_image" + std::to_string(i) + (type == "image/jpeg" ? ".jpg" : "." + type.substr(6));
       std::error_code ec;
       if (from.empty()) ec = std::make_error_code(std::errc::no_such_file_or_directory);
       else fs::copy_file(from, folder_ / file, fs::copy_options::overwrite_existing, ec);
@@ -244,18 +254,61 @@ class Writer {
       }
   }
 
+  // An input accessor's packed elements, as the input has them or, where its data is not valid
+  // glTF for `use`, repaired (as floats).
+  struct Elements {
+    std::vector<uint8_t> bytes;
+    size_t size = 0;  // of one element, bytes
+    int component_type = 0;
+    bool normalized = false;
+  };
+  Elements source_elements(int accessor, VertexUse use) const {
+    if (const RepairedAccessor* fixed = repairs_->find(accessor, use))
+      return {as_bytes(fixed->values), 4 * fixed->components, kFloat, false};
+    const json& a = doc_["accessors"][size_t(accessor)];
+    Elements e;
+    e.bytes = accessor_bytes(src_.model, accessor, &e.size);
+    e.component_type = a["componentType"].get<int>();
+    e.normalized = a.value("normalized", false);
+    return e;
+  }
+
   int remapped(int accessor_index, const std::vector<uint32_t>& source_vertex, BinaryWriter& bin,
-               const std::string& semantic = "", bool back = false) {
-    size_t element_size;
-    std::vector<uint8_t> bytes = accessor_bytes(src_.model, accessor_index, &element_size);
-    std::vector<uint8_t> out(source_vertex.size() * element_size);
+               const std::string& semantic, bool morph_target, bool back) {
+    const Elements in = source_elements(accessor_index, vertex_use(semantic, morph_target));
+    std::vector<uint8_t> out(source_vertex.size() * in.size);
     for (size_t v = 0; v < source_vertex.size(); ++v)
-      std::memcpy(&out[v * element_size], &bytes[size_t(source_vertex[v]) * element_size], element_size);
+      std::memcpy(&out[v * in.size], &in.bytes[size_t(source_vertex[v]) * in.size], in.size);
+    if (back && semantic == "NORMAL") negate(out, in.size, in.component_type, 0, 3);
+    if (back && semantic == "TANGENT") negate(out, in.size, in.component_type, 3, 1);
     const json& a = doc_["accessors"][size_t(accessor_index)];
-    if (back && semantic == "NORMAL") negate(out, element_size, a["componentType"].get<int>(), 0, 3);
-    if (back && semantic == "TANGENT") negate(out, element_size, a["componentType"].get<int>(), 3, 1);
-    return bin.add(out, source_vertex.size(), a["type"].get<std::string>().c_str(), a["componentType"].get<int>(),
-                   a.value("normalized", false), kArrayBuffer, needs_bounds(size_t(accessor_index)));
+    return bin.add(out, source_vertex.size(), a["type"].get<std::string>().c_str(), in.component_type, in.normalized,
+                   kArrayBuffer, needs_bounds(size_t(accessor_index)));
+  }
+
+  // Attributes that still read the input's accessors (kept lightmap UVs, primitives radbake does
+  // not bake) read a repaired copy where the input's data is not valid glTF (io/gltf/vertex_repair.h).
+  void write_repaired_attributes(BinaryWriter& bin) {
+    auto repair = [&](json& index, const std::string& semantic, bool morph_target) {
+      const int accessor = index.get<int>();
+      if (size_t(accessor) >= src_.model.accessors.size()) return;  // written by this bake
+      const VertexUse use = vertex_use(semantic, morph_target);
+      const RepairedAccessor* fixed = repairs_->find(accessor, use);
+      if (!fixed) return;
+      auto [it, first] = repaired_accessors_.emplace(std::make_pair(accessor, use), -1);
+      if (first)
+        it->second = bin.add(as_bytes(fixed->values), fixed->values.size() / fixed->components,
+                             doc_["accessors"][size_t(accessor)]["type"].get<std::string>().c_str(), kFloat, false,
+                             kArrayBuffer, needs_bounds(size_t(accessor)));
+      index = it->second;
+    };
+    for (json& mesh : doc_["meshes"])
+      for (json& prim : mesh["primitives"]) {
+        for (auto it = prim["attributes"].begin(); it != prim["attributes"].end(); ++it) repair(it.value(), it.key(), false);
+        if (prim.contains("targets"))
+          for (json& target : prim["targets"])
+            for (auto it = target.begin(); it != target.end(); ++it) repair(it.value(), it.key(), true);
+      }
   }
 
   void rewrite_primitive(size_t i, BinaryWriter& bin) {
@@ -299,11 +352,11 @@ class Writer {
     if (!lm.kept_input_uvs) {
       // Remap every attribute through the atlas's vertex split.
       for (auto it = attributes.begin(); it != attributes.end(); ++it)
-        it.value() = remapped(it.value().get<int>(), lm.source_vertex, bin, it.key(), back);
+        it.value() = remapped(it.value().get<int>(), lm.source_vertex, bin, it.key(), false, back);
       if (prim.contains("targets"))
         for (json& target : prim["targets"])
           for (auto it = target.begin(); it != target.end(); ++it)
-            it.value() = remapped(it.value().get<int>(), lm.source_vertex, bin, it.key(), back);
+            it.value() = remapped(it.value().get<int>(), lm.source_vertex, bin, it.key(), true, back);
       bool set1_in_use = attributes.contains("TEXCOORD_1") && std::count(used_sets.begin(), used_sets.end(), 1);
       if (set1_in_use) {
         while (attributes.contains("TEXCOORD_" + std::to_string(lightmap_set))) ++lightmap_set;
@@ -470,6 +523,8 @@ class Writer {
   std::set<int> meshes_taken_;
   std::set<size_t> position_accessors_;
   std::map<std::tuple<int, int, int, bool>, int> material_clones_;
+  std::optional<VertexRepairs> repairs_;
+  std::map<std::pair<int, VertexUse>, int> repaired_accessors_;  // (input accessor, use) -> its repaired copy
   std::vector<uint8_t> has_back_;  // per instance: some of its triangles have back-face twins
   std::vector<int> page_texture_;
   float color_scale_ = 1;
