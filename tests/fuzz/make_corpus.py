@@ -14,6 +14,12 @@ Two kinds of mutants:
 - random: type swaps, deletions, numbers pushed to extremes and duplications at random JSON paths.
 
 Files the fuzzer found live in tests/fuzz/findings/ and are never touched here.
+
+The targeted kinds from issue 29 (vertex_values, material_range, morph_targets, image_bytes, skin_use,
+texture_webp) hold what radbake accepts but used to write invalid glTF from: bad vertex data, extension
+values out of range, morph targets, images that are no PNG or JPEG, skins on unskinned meshes and
+EXT_texture_webp naming other images. Their new data goes in data URIs, and their image files
+(texture.tga, texture.webp) beside the mutants.
 """
 import base64
 import copy
@@ -22,6 +28,7 @@ import os
 import random
 import struct
 import sys
+import zlib
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
@@ -383,12 +390,208 @@ def bad_structure(rng, doc):
     return f"structure: {how}"
 
 
+# --- what radbake accepts and once wrote invalid glTF from (issue 29) ------------------------------
+
+def png_bytes(width, height, rgb):
+    """A PNG of 8-bit RGB pixels, rows top to bottom."""
+    def chunk(kind, data):
+        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
+    rows = b"".join(b"\0" + bytes(rgb[y * width * 3:(y + 1) * width * 3]) for y in range(height))
+    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0)) +
+            chunk(b"IDAT", zlib.compress(rows)) + chunk(b"IEND", b""))
+
+
+def tga_bytes(width, height, rgb):
+    """An uncompressed true-colour TGA (what assimp's Collada duck names)."""
+    header = struct.pack("<BBBHHBHHHHBB", 0, 0, 2, 0, 0, 0, 0, 0, width, height, 24, 0)
+    return header + bytes(c for p in range(width * height) for c in reversed(rgb[3 * p:3 * p + 3]))
+
+
+PNG_2X2 = png_bytes(2, 2, [200, 40, 40] * 4)
+TGA_2X2 = tga_bytes(2, 2, [200, 40, 40] * 4)
+# Image files the image kinds name by URI, written beside the mutants: a TGA, and PNG bytes named .webp.
+IMAGE_FILES = {"texture.tga": TGA_2X2, "texture.webp": PNG_2X2}
+
+
+def data_uri(mime, data):
+    return f"data:{mime};base64," + base64.b64encode(data).decode()
+
+
+def add_accessor(doc, values, count, kind, component_type=5126):
+    """An accessor over `values` (floats, or unsigned bytes) in a buffer of its own; returns its index.
+    No min/max: NaN has no JSON spelling, and radbake measures the bounds it writes."""
+    data = struct.pack(f"<{len(values)}{'f' if component_type == 5126 else 'B'}", *values)
+    data += b"\0" * (-len(data) % 4)
+    doc.setdefault("buffers", []).append({"byteLength": len(data), "uri": data_uri("application/octet-stream", data)})
+    doc.setdefault("bufferViews", []).append({"buffer": len(doc["buffers"]) - 1, "byteLength": len(data)})
+    doc.setdefault("accessors", []).append({"bufferView": len(doc["bufferViews"]) - 1, "componentType": component_type,
+                                            "count": count, "type": kind})
+    return len(doc["accessors"]) - 1
+
+
+def vertex_count(doc, prim):
+    return doc["accessors"][prim["attributes"]["POSITION"]]["count"]
+
+
+def triangle_primitives(doc):
+    """(mesh, primitive) of every primitive drawn as triangles."""
+    return [(m, k) for m, mesh in enumerate(first(doc, "meshes")) for k, prim in enumerate(mesh.get("primitives", []))
+            if prim.get("mode", 4) >= 4 and "POSITION" in prim.get("attributes", {})]
+
+
+def declare(doc, extension):
+    if extension not in doc.setdefault("extensionsUsed", []):
+        doc["extensionsUsed"].append(extension)
+
+
+def vertex_values(rng, doc):
+    """NaN, infinite, zero-length or huge normals and tangents, tangents' w not +-1, NaN texcoords."""
+    found = triangle_primitives(doc)
+    if not found:
+        return None
+    m, k = rng.choice(found)
+    prim = doc["meshes"][m]["primitives"][k]
+    n = vertex_count(doc, prim)
+    attribute = rng.choice(["NORMAL", "TANGENT", "TEXCOORD_0"] if "NORMAL" in prim["attributes"] else
+                           ["NORMAL", "TEXCOORD_0"])
+    bad = rng.choice({"NORMAL": ["nan", "inf", "zero", "huge", "short"],
+                      "TANGENT": ["nan", "zero", "huge", "sign", "nan_sign"],
+                      "TEXCOORD_0": ["nan", "inf", "-inf"]}[attribute])
+    good = {"NORMAL": [0.0, 1.0, 0.0], "TANGENT": [1.0, 0.0, 0.0, 1.0], "TEXCOORD_0": [0.5, 0.5]}[attribute]
+    wrong = {"nan": float("nan"), "inf": float("inf"), "-inf": float("-inf"), "zero": 0.0, "huge": 1e30,
+             "short": 0.1, "sign": 0.5, "nan_sign": float("nan")}[bad]
+    values = []
+    for v in range(n):
+        element = list(good)
+        if v % 3 == 0:  # a third of the vertices
+            if bad in ("sign", "nan_sign"):
+                element[3] = wrong
+            elif bad in ("zero", "huge", "short"):
+                element = [wrong * e if bad != "zero" else 0.0 for e in element[:3]] + element[3:]
+            else:
+                element[v % len(element)] = wrong
+        values += element
+    prim["attributes"][attribute] = add_accessor(doc, values, n, {2: "VEC2", 3: "VEC3", 4: "VEC4"}[len(good)])
+    return f"/meshes/{m}/primitives/{k}/attributes/{attribute}: {bad} at every third vertex"
+
+
+def material_range(rng, doc):
+    """KHR_materials_ior and KHR_materials_transmission values out of range or of the wrong type."""
+    materials = first(doc, "materials")
+    if not materials:
+        return None
+    m = rng.randrange(len(materials))
+    extension, key, value = rng.choice([
+        ("KHR_materials_ior", "ior", -1), ("KHR_materials_ior", "ior", 0.5), ("KHR_materials_ior", "ior", "1.5"),
+        ("KHR_materials_ior", "ior", None), ("KHR_materials_transmission", "transmissionFactor", 2),
+        ("KHR_materials_transmission", "transmissionFactor", -0.5), ("KHR_materials_specular", "specularFactor", 3),
+        ("KHR_materials_clearcoat", "clearcoatRoughnessFactor", 1.5)])
+    materials[m].setdefault("extensions", {})[extension] = {key: value}
+    declare(doc, extension)
+    return f"/materials/{m}/extensions/{extension}/{key} -> {json.dumps(value)}"
+
+
+def morph_targets(rng, doc):
+    """A NaN or infinite displacement, or 5,000 empty morph targets, on every primitive of a mesh."""
+    found = triangle_primitives(doc)
+    if not found:
+        return None
+    m = rng.choice(found)[0]
+    mesh = doc["meshes"][m]
+    how = rng.choice(["nan_displacement", "inf_displacement", "empty_targets"])
+    for prim in mesh["primitives"]:
+        if how == "empty_targets":
+            prim["targets"] = [{} for _ in range(5000)]
+            continue
+        n = vertex_count(doc, prim)
+        wrong = float("nan") if how == "nan_displacement" else float("inf")
+        values = [wrong if v == 0 and c == 1 else 0.01 * c for v in range(n) for c in range(3)]
+        prim["targets"] = [{"POSITION": add_accessor(doc, values, n, "VEC3")}]
+    mesh["weights"] = [0.0] * len(mesh["primitives"][0]["targets"])
+    return f"/meshes/{m}: {how}"
+
+
+def textured_material(doc):
+    """A material every primitive using it gives TEXCOORD_0, so a texture on it is read; or None."""
+    users = {}
+    for mesh in first(doc, "meshes"):
+        for prim in mesh.get("primitives", []):
+            if "material" in prim:
+                users.setdefault(prim["material"], []).append("TEXCOORD_0" in prim.get("attributes", {}))
+    ok = sorted(m for m, has in users.items() if all(has) and isinstance(m, int) and 0 <= m < len(first(doc, "materials")))
+    return ok[0] if ok else None
+
+
+def add_texture(doc, image, material):
+    """`image` as a new image, its texture the material's base colour texture; returns the texture."""
+    doc.setdefault("images", []).append(image)
+    doc.setdefault("textures", []).append({"source": len(doc["images"]) - 1})
+    doc["materials"][material].setdefault("pbrMetallicRoughness", {})["baseColorTexture"] = {
+        "index": len(doc["textures"]) - 1}
+    return len(doc["textures"]) - 1
+
+
+def image_bytes(rng, doc):
+    """Images that are no PNG or JPEG, or not the one their mimeType says."""
+    material = textured_material(doc)
+    if material is None:
+        return None
+    how = rng.choice(["garbage_png", "tga_file", "truncated_jpeg", "png_said_jpeg"])
+    image = {"garbage_png": {"uri": data_uri("image/png", b"\x89PNG\r\n\x1a\n" + bytes(40))},
+             "tga_file": {"uri": "texture.tga"},
+             "truncated_jpeg": {"uri": data_uri("image/jpeg", b"\xff\xd8\xff\xe0\x00\x10JFIF")},
+             "png_said_jpeg": {"uri": data_uri("image/jpeg", PNG_2X2), "mimeType": "image/jpeg"}}[how]
+    add_texture(doc, image, material)
+    return f"images: {how} on /materials/{material}"
+
+
+def skin_use(rng, doc):
+    """A skin on a node whose mesh has no joints, or joints on a mesh whose node has no skin."""
+    nodes = first(doc, "nodes")
+    with_mesh = [i for i, node in enumerate(nodes) if isinstance(node.get("mesh"), int)]
+    if not with_mesh or not first(doc, "scenes"):
+        return None
+    n = rng.choice(with_mesh)
+    how = rng.choice(["skin_without_joints", "joints_without_skin"])
+    if how == "skin_without_joints":
+        nodes.append({"name": "joint"})
+        doc["scenes"][0].setdefault("nodes", []).append(len(nodes) - 1)
+        doc.setdefault("skins", []).append({"joints": [len(nodes) - 1]})
+        nodes[n]["skin"] = len(doc["skins"]) - 1
+    else:
+        for prim in doc["meshes"][nodes[n]["mesh"]]["primitives"]:
+            count = vertex_count(doc, prim)
+            prim["attributes"]["JOINTS_0"] = add_accessor(doc, [0] * 4 * count, count, "VEC4", 5121)
+            prim["attributes"]["WEIGHTS_0"] = add_accessor(doc, [1.0, 0.0, 0.0, 0.0] * count, count, "VEC4")
+    return f"/nodes/{n}: {how}"
+
+
+def texture_webp(rng, doc):
+    """EXT_texture_webp naming a PNG, or a file whose bytes are not WebP."""
+    material = textured_material(doc)
+    if material is None:
+        return None
+    how = rng.choice(["names_png", "names_png_as_only_source", "png_bytes_named_webp"])
+    image = {"uri": "texture.webp"} if how == "png_bytes_named_webp" else {"uri": data_uri("image/png", PNG_2X2)}
+    t = add_texture(doc, image, material)
+    texture = doc["textures"][t]
+    texture["extensions"] = {"EXT_texture_webp": {"source": texture["source"]}}
+    if how != "names_png":
+        del texture["source"]
+    declare(doc, "EXT_texture_webp")
+    return f"/textures/{t}: {how}"
+
+
 TARGETED = {
     "index": mutate_index, "uri": bad_uri, "accessor": bad_accessor, "buffer_view": bad_buffer_view,
     "nodes": nested_nodes, "extension": bad_extension, "material": bad_material, "mesh": bad_mesh,
     "texture": bad_texture, "structure": bad_structure,
+    "vertex_values": vertex_values, "material_range": material_range, "morph_targets": morph_targets,
+    "image_bytes": image_bytes, "skin_use": skin_use, "texture_webp": texture_webp,
 }
-TARGETED_PER_SOURCE = 2  # of each kind
+TARGETED_PER_SOURCE = 2  # of each kind, but for issue 29's, which have more variants each
+PER_SOURCE = {"vertex_values": 4, "material_range": 3, "morph_targets": 3, "image_bytes": 3, "skin_use": 2,
+              "texture_webp": 3}
 
 
 # --- random mutations ----------------------------------------------------------------------------
@@ -458,6 +661,8 @@ def main():
         data = open(os.path.join(ROOT, relative), "rb").read()
         open(os.path.join(OUT, os.path.basename(relative)), "wb").write(data)
     open(os.path.join(OUT, "truncated.bin"), "wb").write(bytes(10))
+    for file, data in IMAGE_FILES.items():
+        open(os.path.join(OUT, file), "wb").write(data)
     written = 0
 
     def write(stem, doc_text, bin_chunk, what, raw=None, glb=None):
@@ -480,7 +685,7 @@ def main():
         for kind, mutate in TARGETED.items():
             made = 0
             for attempt in range(12):
-                if made == TARGETED_PER_SOURCE:
+                if made == PER_SOURCE.get(kind, TARGETED_PER_SOURCE):
                     break
                 rng = random.Random(f"{SEED}:{name}:{kind}:{attempt}")
                 doc = copy.deepcopy(source)
