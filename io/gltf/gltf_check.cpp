@@ -754,8 +754,35 @@ class DocumentCheck {
       violate(p, "reads TEXCOORD_" + std::to_string(set) + ", which a primitive using the material does not have");
   }
 
+  // KHR_materials_pbrSpecularGlossiness is archived: beside any other extension (MOZ_lightmap,
+  // which every baked material gets) the validator warns MULTIPLE_EXTENSIONS, and current viewers
+  // ignore it. A diffuse bake needs only its diffuse part, so the material becomes the
+  // metallic-roughness one the extension's own conversion gives: base colour = diffuse, metallic 0,
+  // roughness 1 - glossiness. Its specular colour and texture have no metallic-roughness form.
+  void specular_glossiness_to_metallic_roughness(json& m, const std::string& at) {
+    json* all = find(m, "extensions");
+    if (!all || !all->is_object() || !all->contains(kSpecularGlossiness)) return;
+    json spec = (*all)[kSpecularGlossiness];
+    all->erase(kSpecularGlossiness);
+    if (all->empty()) m.erase("extensions");
+    json pbr = json::object();
+    if (spec.is_object()) {
+      if (spec.contains("diffuseFactor")) pbr["baseColorFactor"] = spec["diffuseFactor"];
+      if (spec.contains("diffuseTexture")) pbr["baseColorTexture"] = spec["diffuseTexture"];
+      const json glossiness = spec.value("glossinessFactor", json(1.0));
+      pbr["roughnessFactor"] = glossiness.is_number() ? 1.0 - std::clamp(glossiness.get<double>(), 0.0, 1.0) : 0.0;
+    }
+    pbr["metallicFactor"] = 0.0;
+    m["pbrMetallicRoughness"] = pbr;
+    converted_specular_glossiness_ = true;
+    changed_ = true;
+    warnings_.push_back("converted " + at + " from specular-glossiness (" + kSpecularGlossiness +
+                        ", archived) to metallic-roughness: base colour = diffuse, metallic 0, roughness 1 - glossiness");
+  }
+
   void material(json& m, const std::string& at) {
     const int64_t self = std::stoll(at.substr(at.rfind('/') + 1));
+    specular_glossiness_to_metallic_roughness(m, at);
     if (json* pbr = object(m, "pbrMetallicRoughness", at)) {
       const std::string p = child(at, "pbrMetallicRoughness");
       numbers(*pbr, "baseColorFactor", p, 4, 0, 1);
@@ -863,6 +890,8 @@ class DocumentCheck {
   // extensionsUsed lists every extension the file uses, once; extensionsRequired only used ones.
   void declarations() {
     std::vector<std::string> used = declared("extensionsUsed");
+    const bool converted_away = converted_specular_glossiness_ && !used_extensions_.count(kSpecularGlossiness);
+    if (converted_away) used.erase(std::remove(used.begin(), used.end(), kSpecularGlossiness), used.end());
     for (const std::string& name : used_extensions_)
       if (std::find(used.begin(), used.end(), name) == used.end()) {
         warnings_.push_back("declared " + name + " in /extensionsUsed (the file uses it without declaring it)");
@@ -870,6 +899,7 @@ class DocumentCheck {
         changed_ = true;
       }
     std::vector<std::string> required = declared("extensionsRequired");
+    if (converted_away) required.erase(std::remove(required.begin(), required.end(), kSpecularGlossiness), required.end());
     for (auto it = required.begin(); it != required.end();) {
       if (radbake_reads(*it) && !used_extensions_.count(*it)) {
         warnings_.push_back("dropped " + *it + " from /extensionsRequired (nothing in the file uses it)");
@@ -916,6 +946,8 @@ class DocumentCheck {
   json& doc_;
   std::vector<std::string>& warnings_;
   bool changed_ = false;
+  static constexpr const char* kSpecularGlossiness = "KHR_materials_pbrSpecularGlossiness";
+  bool converted_specular_glossiness_ = false;
   std::set<std::string> used_extensions_;
   std::vector<int64_t> camera_renumbering_, skin_renumbering_;
   std::map<int64_t, std::set<int64_t>> texcoords_of_material_;

@@ -520,8 +520,6 @@ class SceneBuilder {
     if (active("KHR_materials_clearcoat", "clearcoatFactor", 0)) out.push_back("clearcoat (KHR_materials_clearcoat)");
     if (active("KHR_materials_sheen", nullptr, 0)) out.push_back("sheen (KHR_materials_sheen)");
     if (active("KHR_materials_iridescence", "iridescenceFactor", 0)) out.push_back("iridescence (KHR_materials_iridescence)");
-    if (active("KHR_materials_pbrSpecularGlossiness", nullptr, 0))
-      out.push_back("specular-glossiness (KHR_materials_pbrSpecularGlossiness)");
     return out;
   }
 

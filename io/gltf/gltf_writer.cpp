@@ -1,11 +1,13 @@
 #include "io/gltf/gltf_writer.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <cfloat>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <optional>
 #include <set>
@@ -111,9 +113,29 @@ class Writer {
       size_t length = buffer.value("byteLength", size_t(0));
       std::vector<uint8_t> bytes(data->begin(), data->begin() + long(std::min(length, data->size())));
       bytes.resize(length, 0);
+      make_buffer_view_pngs_plain(b, bytes);
       write_bytes(folder_ / file, bytes.data(), bytes.size());
       buffer["uri"] = file;
       out_.written_files.push_back(file);
+    }
+  }
+
+  // PNG images in buffer `b` shrink in place (make_png_plain): their view's byteLength is what is
+  // left, and the freed bytes are zeros no view covers.
+  void make_buffer_view_pngs_plain(size_t b, std::vector<uint8_t>& bytes) {
+    const json& images = doc_["images"];
+    for (size_t i = 0; i < images.size(); ++i) {
+      if (!images[i].contains("bufferView") || src_.image_types[i] != "image/png") continue;
+      json& view = doc_["bufferViews"][images[i]["bufferView"].get<size_t>()];
+      if (view["buffer"].get<size_t>() != b) continue;
+      const size_t offset = view.value("byteOffset", size_t(0)), length = view["byteLength"].get<size_t>();
+      if (offset + length > bytes.size()) continue;
+      std::string png(bytes.begin() + long(offset), bytes.begin() + long(offset + length));
+      const std::string warning = make_png_plain(png, "/images/" + std::to_string(i));
+      if (warning.empty()) continue;
+      std::fill(std::copy(png.begin(), png.end(), bytes.begin() + long(offset)), bytes.begin() + long(offset + length), 0);
+      view["byteLength"] = png.size();
+      out_.warnings.push_back(warning);
     }
   }
 
@@ -178,6 +200,7 @@ class Writer {
       std::string file = name_ + "_image" + std::to_string(i) + (type == "image/jpeg" ? ".jpg" : "." + type.substr(6));
       std::error_code ec;
       if (from.empty()) ec = std::make_error_code(std::errc::no_such_file_or_directory);
+      else if (type == "image/png") copy_plain_png(from, folder_ / file, "/images/" + std::to_string(i), ec);
       else fs::copy_file(from, folder_ / file, fs::copy_options::overwrite_existing, ec);
       if (ec) {
         out_.warnings.push_back("image '" + clipped(uri) + "' could not be copied: " + ec.message());
@@ -186,6 +209,16 @@ class Writer {
       images[i]["uri"] = file;
       out_.written_files.push_back(file);
     }
+  }
+
+  void copy_plain_png(const fs::path& from, const fs::path& to, const std::string& pointer, std::error_code& ec) {
+    std::ifstream in(from, std::ios::binary);
+    std::string png((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (!in && !in.eof()) return ec.assign(EIO, std::generic_category());
+    const std::string warning = make_png_plain(png, pointer);
+    if (warning.empty()) return fs::copy_file(from, to, fs::copy_options::overwrite_existing, ec), void();
+    write_bytes(to, reinterpret_cast<const uint8_t*>(png.data()), png.size());
+    out_.warnings.push_back(warning);
   }
 
   // No mipmaps: a chart's neighbours are a few texels away, and mip levels average them in (see

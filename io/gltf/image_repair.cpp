@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <set>
 
+#include "io/gltf/base64.h"
+
 namespace radbake {
 namespace {
 
@@ -150,13 +152,64 @@ void undeclare(json& doc, const std::set<std::string>& names) {
   }
 }
 
+uint32_t big_endian(const std::string& b, size_t at) {
+  return uint32_t(uint8_t(b[at])) << 24 | uint32_t(uint8_t(b[at + 1])) << 16 | uint32_t(uint8_t(b[at + 2])) << 8 |
+         uint32_t(uint8_t(b[at + 3]));
+}
+
+// Whether the validator accepts the chunk `type` with `data` (its PNG reader's rules): cHRM only
+// with sRGB's primaries and white, gAMA only 1/2.2 or 1, pHYs only square pixels.
+bool plain_chunk(const std::string& type, const std::string& bytes, size_t data, uint32_t length) {
+  if (type == "iCCP" || type == "acTL" || type == "fcTL" || type == "fdAT") return false;
+  if (type == "cHRM") {
+    static const uint32_t kSrgb[8] = {31270, 32900, 64000, 33000, 30000, 60000, 15000, 6000};
+    if (length != 32) return false;
+    for (size_t k = 0; k < 8; ++k)
+      if (big_endian(bytes, data + 4 * k) != kSrgb[k]) return false;
+  }
+  if (type == "gAMA") return length == 4 && (big_endian(bytes, data) == 45455 || big_endian(bytes, data) == 100000);
+  if (type == "pHYs") return length == 9 && big_endian(bytes, data) == big_endian(bytes, data + 4);
+  return true;
+}
+
 }  // namespace
+
+std::string make_png_plain(std::string& bytes, const std::string& pointer) {
+  static const char kSignature[] = "\x89PNG\r\n\x1a\n";
+  if (bytes.size() < 8 || bytes.compare(0, 8, kSignature, 8) != 0) return "";
+  std::string kept = bytes.substr(0, 8);
+  std::vector<std::string> dropped;
+  for (size_t at = 8; at + 12 <= bytes.size();) {
+    const uint32_t length = big_endian(bytes, at);
+    if (length > bytes.size() - at - 12) return "";  // cut short: left as it is, the validator judges it
+    const std::string type = bytes.substr(at + 4, 4);
+    if (plain_chunk(type, bytes, at + 8, length)) kept.append(bytes, at, 12 + size_t(length));
+    else if (std::find(dropped.begin(), dropped.end(), type) == dropped.end()) dropped.push_back(type);
+    at += 12 + size_t(length);
+  }
+  if (dropped.empty()) return "";
+  bytes = std::move(kept);
+  std::string names;
+  for (const std::string& d : dropped) names += (names.empty() ? "" : ", ") + d;
+  return pointer + ": took its PNG's " + names + (dropped.size() == 1 ? " chunk" : " chunks") + " out (a colour space other than sRGB, non-square pixels or " +
+         "animation, which glTF viewers ignore and the validator flags as IMAGE_FEATURES_UNSUPPORTED)";
+}
 
 std::vector<uint8_t> repair_images(json& doc, const GltfSource& source, std::vector<std::string>& warnings) {
   if (!doc.contains("images")) return {};
   std::vector<uint8_t> keep(doc["images"].size());
   for (size_t i = 0; i < keep.size(); ++i) keep[i] = unwritable_image(source, i).empty();
   declare_types(doc["images"], source, keep, warnings);
+  for (size_t i = 0; i < keep.size(); ++i) {
+    json& image = doc["images"][i];
+    const std::string uri = image.value("uri", ""), header = "data:image/png;base64,";
+    if (!keep[i] || uri.rfind(header, 0) != 0) continue;
+    std::string png = from_base64(uri.substr(header.size()));
+    const std::string warning = make_png_plain(png, "/images/" + std::to_string(i));
+    if (warning.empty()) continue;
+    image["uri"] = header + to_base64(png);
+    warnings.push_back(warning);
+  }
   if (!doc.contains("textures")) return keep;
   std::set<int64_t> blank;  // textures left with no image
   std::set<std::string> dropped;

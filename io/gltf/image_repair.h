@@ -24,6 +24,15 @@ std::string unwritable_image(const GltfSource& source, size_t i);
 // it named becomes the texture's source where it has none); textures' sources of images not written
 // removed, and the material references to textures left with no image. Returns, per image,
 // whether it is written; the writer removes the others (remove_objects) once it has copied the rest.
+// Data-URI PNGs are also made plain (below) there.
 std::vector<uint8_t> repair_images(nlohmann::ordered_json& doc, const GltfSource& source, std::vector<std::string>& warnings);
+
+// Takes out of a PNG the chunks glTF viewers ignore and the validator flags as unsupported features
+// (IMAGE_FEATURES_UNSUPPORTED): colour-space information other than sRGB's (cHRM, gAMA and iCCP,
+// as glTF's colour textures are sRGB and its others linear whatever they say), non-square pixels
+// (pHYs) and animation (acTL, fcTL, fdAT: the default image stays). Chunks are whole, with their
+// own CRCs, so the rest is unchanged. Returns a warning naming `pointer` and the chunks, or ""
+// when nothing was taken out or the bytes are no PNG.
+std::string make_png_plain(std::string& bytes, const std::string& pointer);
 
 }  // namespace radbake

@@ -409,7 +409,8 @@ def tga_bytes(width, height, rgb):
 
 PNG_2X2 = png_bytes(2, 2, [200, 40, 40] * 4)
 TGA_2X2 = tga_bytes(2, 2, [200, 40, 40] * 4)
-# Image files the image kinds name by URI, written beside the mutants: a TGA, and PNG bytes named .webp.
+# Image files the image kinds name by URI, written beside the mutants: a TGA, PNG bytes named .webp,
+# and PNGs with chunks the validator flags (png_chunks, below).
 IMAGE_FILES = {"texture.tga": TGA_2X2, "texture.webp": PNG_2X2}
 
 
@@ -582,16 +583,71 @@ def texture_webp(rng, doc):
     return f"/textures/{t}: {how}"
 
 
+def specular_glossiness(rng, doc):
+    """KHR_materials_pbrSpecularGlossiness on a material: archived, and beside MOZ_lightmap the
+    validator warns MULTIPLE_EXTENSIONS (as assimp's converted files carry it)."""
+    materials = first(doc, "materials")
+    if not materials:
+        return None
+    m = rng.randrange(len(materials))
+    how = rng.choice(["beside_metallic_roughness", "alone", "required"])
+    if not isinstance(materials[m], dict):
+        return None
+    spec = {"diffuseFactor": [round(rng.random(), 3) for _ in range(3)] + [1.0], "specularFactor": [0.5, 0.5, 0.5],
+            "glossinessFactor": round(rng.random(), 3)}
+    if how == "alone":
+        materials[m].pop("pbrMetallicRoughness", None)
+    materials[m].setdefault("extensions", {})["KHR_materials_pbrSpecularGlossiness"] = spec
+    declare(doc, "KHR_materials_pbrSpecularGlossiness")
+    if how == "required":
+        doc.setdefault("extensionsRequired", []).append("KHR_materials_pbrSpecularGlossiness")
+    return f"/materials/{m}: specular-glossiness {how}"
+
+
+def png_with(chunks_after_header, before_data=()):
+    """PNG_2X2 with chunks added after IHDR, and before IDAT."""
+    def chunk(kind, data):
+        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
+    ihdr_end = 8 + 25
+    idat = PNG_2X2.index(b"IDAT") - 4
+    return (PNG_2X2[:ihdr_end] + b"".join(chunk(k, d) for k, d in chunks_after_header) + PNG_2X2[ihdr_end:idat] +
+            b"".join(chunk(k, d) for k, d in before_data) + PNG_2X2[idat:])
+
+
+ADOBE_RGB = struct.pack(">8I", 31270, 32900, 64000, 33000, 21000, 71000, 15000, 6000)
+# PNGs with chunks the validator flags (IMAGE_FEATURES_UNSUPPORTED), by what they carry.
+FLAGGED_PNGS = {"chrm": png_with([(b"cHRM", ADOBE_RGB)]),
+                "gama": png_with([(b"gAMA", struct.pack(">I", 55556))]),
+                "iccp": png_with([(b"iCCP", b"icc\0\0" + zlib.compress(b"profile"))]),
+                "phys": png_with([(b"pHYs", struct.pack(">IIB", 2835, 5670, 1))]),
+                "apng": png_with([(b"acTL", struct.pack(">II", 1, 0))],
+                                 [(b"fcTL", struct.pack(">IIIIIHHBB", 0, 2, 2, 0, 0, 1, 10, 0, 0))])}
+
+
+def png_chunks(rng, doc):
+    """A PNG texture with what glTF viewers ignore and the validator flags as unsupported features:
+    a colour space other than sRGB's, non-square pixels, animation."""
+    material = textured_material(doc)
+    if material is None:
+        return None
+    how = rng.choice(sorted(FLAGGED_PNGS))
+    png = FLAGGED_PNGS[how]
+    image = {"uri": data_uri("image/png", png)} if rng.random() < 0.5 else {"uri": f"texture_{how}.png"}
+    add_texture(doc, image, material)
+    return f"images: PNG with {how} on /materials/{material}"
+
+
 TARGETED = {
     "index": mutate_index, "uri": bad_uri, "accessor": bad_accessor, "buffer_view": bad_buffer_view,
     "nodes": nested_nodes, "extension": bad_extension, "material": bad_material, "mesh": bad_mesh,
     "texture": bad_texture, "structure": bad_structure,
     "vertex_values": vertex_values, "material_range": material_range, "morph_targets": morph_targets,
     "image_bytes": image_bytes, "skin_use": skin_use, "texture_webp": texture_webp,
+    "specular_glossiness": specular_glossiness, "png_chunks": png_chunks,
 }
 TARGETED_PER_SOURCE = 2  # of each kind, but for issue 29's, which have more variants each
 PER_SOURCE = {"vertex_values": 4, "material_range": 3, "morph_targets": 3, "image_bytes": 3, "skin_use": 2,
-              "texture_webp": 3}
+              "texture_webp": 3, "specular_glossiness": 3, "png_chunks": 3}
 
 
 # --- random mutations ----------------------------------------------------------------------------
@@ -663,6 +719,8 @@ def main():
     open(os.path.join(OUT, "truncated.bin"), "wb").write(bytes(10))
     for file, data in IMAGE_FILES.items():
         open(os.path.join(OUT, file), "wb").write(data)
+    for how, data in FLAGGED_PNGS.items():
+        open(os.path.join(OUT, f"texture_{how}.png"), "wb").write(data)
     written = 0
 
     def write(stem, doc_text, bin_chunk, what, raw=None, glb=None):

@@ -26,7 +26,8 @@ BAKE_OPTIONS = ["--max-page-size", "64", "--quality", "draft", "--gather-rays", 
 SANITIZER_MARKS = ("ERROR: AddressSanitizer", "ERROR: LeakSanitizer", "runtime error:")
 # Validator warnings about what radbake copies from its input and must repair or drop
 # (docs/hostile_input.md); its errors all fail a file.
-WATCHED_WARNINGS = ("IMAGE_UNRECOGNIZED_FORMAT", "NODE_SKINNED_MESH_WITHOUT_SKIN")
+WATCHED_WARNINGS = ("IMAGE_UNRECOGNIZED_FORMAT", "NODE_SKINNED_MESH_WITHOUT_SKIN", "MULTIPLE_EXTENSIONS",
+                    "IMAGE_FEATURES_UNSUPPORTED")
 
 
 def corpus_files(folders, prefix):

@@ -15,6 +15,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 
+#include "io/gltf/base64.h"
 #include "io/gltf/gltf_loader.h"
 #include "support/commands.h"
 #include "support/scene_builders.h"
@@ -378,6 +379,129 @@ TEST(OutputValidity, ExtTextureWebpMustNameWebp) {
       named = test::slurp(kept.path(image["uri"])).rfind("RIFF", 0) == 0;
     }
   EXPECT_TRUE(named) << kept.doc["textures"] << kept.doc["images"];
+}
+
+// KHR_materials_pbrSpecularGlossiness (archived; beside MOZ_lightmap the validator warns
+// MULTIPLE_EXTENSIONS) becomes metallic-roughness with its diffuse as the base colour, which the
+// bake reads too; the extension leaves extensionsUsed and extensionsRequired.
+TEST(OutputValidity, SpecularGlossinessBecomesMetallicRoughness) {
+  Room room;
+  json& floor = room.doc["materials"][0];
+  const json diffuse = {0.25, 0.5, 0.75, 1.0};
+  floor["pbrMetallicRoughness"]["baseColorFactor"] = {1, 0, 0, 1};  // what a viewer without the extension shows
+  floor["extensions"]["KHR_materials_pbrSpecularGlossiness"] = {
+      {"diffuseFactor", diffuse}, {"specularFactor", {0.5, 0.5, 0.5}}, {"glossinessFactor", 0.25}};
+  for (const char* list : {"extensionsUsed", "extensionsRequired"}) room.doc[list].push_back("KHR_materials_pbrSpecularGlossiness");
+  const std::string input = room.save("specular_glossiness");
+  const Baked b = bake(input);
+  EXPECT_EQ(b.warnings_naming("/materials/0"), 1u) << b.run.err;
+  expect_valid(b);
+  for (const char* list : {"extensionsUsed", "extensionsRequired"})
+    for (const json& name : b.doc.value(list, json::array())) EXPECT_NE(name, "KHR_materials_pbrSpecularGlossiness") << list;
+  size_t floors = 0;
+  for (const json& material : b.doc["materials"]) {
+    EXPECT_FALSE(material.contains("extensions") && material["extensions"].contains("KHR_materials_pbrSpecularGlossiness"));
+    if (material["name"].get<std::string>().rfind("floor", 0) != 0) continue;
+    ++floors;
+    EXPECT_EQ(material["pbrMetallicRoughness"]["baseColorFactor"], diffuse);
+    EXPECT_EQ(material["pbrMetallicRoughness"]["metallicFactor"], 0.0);
+    EXPECT_EQ(material["pbrMetallicRoughness"]["roughnessFactor"], 0.75);  // 1 - glossiness
+  }
+  EXPECT_GT(floors, 0u);
+  // The bake reflects the diffuse colour, not the fallback's red.
+  const Scene scene = load_gltf(input).scene;
+  EXPECT_FLOAT_EQ(scene.materials[0].base_color.y, 0.5f);
+  EXPECT_FLOAT_EQ(scene.materials[0].base_color.z, 0.75f);
+}
+
+// PNG chunks the validator flags (IMAGE_FEATURES_UNSUPPORTED: cHRM other than sRGB's, gAMA other
+// than 1/2.2, iCCP, non-square pHYs) are taken out of images radbake writes, wherever the image
+// lives: a file beside the scene, a data URI, a buffer view. The pixels are the same bytes.
+struct Chunk {
+  std::string type, data;
+};
+
+uint32_t crc32_of(const std::string& bytes) {
+  uint32_t crc = 0xffffffffu;
+  for (unsigned char c : bytes) {
+    crc ^= c;
+    for (int k = 0; k < 8; ++k) crc = crc & 1 ? 0xedb88320u ^ (crc >> 1) : crc >> 1;
+  }
+  return ~crc;
+}
+
+std::string big_endian(uint32_t v) { return {char(v >> 24), char(v >> 16), char(v >> 8), char(v)}; }
+
+std::vector<Chunk> png_chunks(const std::string& png) {
+  std::vector<Chunk> chunks;
+  for (size_t at = 8; at + 12 <= png.size();) {
+    const uint32_t length = uint32_t(uint8_t(png[at])) << 24 | uint32_t(uint8_t(png[at + 1])) << 16 |
+                            uint32_t(uint8_t(png[at + 2])) << 8 | uint32_t(uint8_t(png[at + 3]));
+    chunks.push_back({png.substr(at + 4, 4), png.substr(at + 8, length)});
+    at += 12 + length;
+  }
+  return chunks;
+}
+
+std::string png_of(const std::vector<Chunk>& chunks) {
+  std::string png = "\x89PNG\r\n\x1a\n";
+  for (const Chunk& c : chunks) png += big_endian(uint32_t(c.data.size())) + c.type + c.data + big_endian(crc32_of(c.type + c.data));
+  return png;
+}
+
+TEST(OutputValidity, PngColourSpaceAspectAndAnimationChunksAreTakenOut) {
+  Room plain;
+  const std::string uri = plain.doc["images"][0]["uri"], header = "data:image/png;base64,";
+  ASSERT_EQ(uri.rfind(header, 0), 0u);
+  const std::string original = from_base64(uri.substr(header.size()));
+  std::vector<Chunk> chunks = png_chunks(original);
+  ASSERT_EQ(chunks.front().type, "IHDR");
+  // Adobe RGB's primaries, a gamma of 1/1.8, an (empty-named) ICC profile, pixels twice as tall as wide.
+  std::string chrm;
+  for (uint32_t v : {31270u, 32900u, 64000u, 33000u, 21000u, 71000u, 15000u, 6000u}) chrm += big_endian(v);
+  const std::vector<Chunk> flagged = {{"cHRM", chrm}, {"gAMA", big_endian(55556)}, {"iCCP", std::string("x\0\0", 3)},
+                                      {"pHYs", big_endian(2835) + big_endian(5670) + std::string(1, '\1')}};
+  chunks.insert(chunks.begin() + 1, flagged.begin(), flagged.end());
+  const std::string marked = png_of(chunks);
+  std::string idat;
+  for (const Chunk& c : png_chunks(original))
+    if (c.type == "IDAT") idat += c.data;
+
+  for (const std::string place : {"file", "data URI", "buffer view"}) {
+    SCOPED_TRACE(place);
+    Room room;
+    json& image = room.doc["images"][0];
+    if (place == "file") {
+      image["uri"] = "floor.png";
+      room.files["floor.png"] = std::vector<uint8_t>(marked.begin(), marked.end());
+    } else if (place == "data URI") {
+      image["uri"] = header + to_base64(marked);
+    } else {
+      image.erase("uri");
+      const int accessor = room.add(std::vector<uint8_t>(marked.begin(), marked.end()), "SCALAR", 5121);
+      image["bufferView"] = room.doc["accessors"][accessor]["bufferView"];
+      image["mimeType"] = "image/png";
+      room.doc["accessors"].erase(room.doc["accessors"].size() - 1);
+    }
+    const Baked b = bake(room.save("png_" + std::to_string(place.size())));
+    EXPECT_EQ(b.warnings_naming("/images/0"), 1u) << b.run.err;
+    EXPECT_NE(b.run.err.find("cHRM, gAMA, iCCP, pHYs chunks out"), std::string::npos) << b.run.err;
+    expect_valid(b);
+    // The written image: its chunks are the original's, IDAT for IDAT.
+    ASSERT_EQ(b.doc["images"].size(), 2u);  // the floor's and the lightmap page's
+    const json& written = b.doc["images"][0];
+    std::string bytes;
+    if (written.contains("bufferView")) {
+      const json& view = b.doc["bufferViews"][written["bufferView"].get<size_t>()];
+      bytes = test::slurp(b.path(b.doc["buffers"][view["buffer"].get<size_t>()]["uri"]))
+                  .substr(view.value("byteOffset", size_t(0)), view["byteLength"].get<size_t>());
+    } else if (written["uri"].get<std::string>().rfind(header, 0) == 0) {
+      bytes = from_base64(written["uri"].get<std::string>().substr(header.size()));
+    } else {
+      bytes = test::slurp(b.path(written["uri"]));
+    }
+    EXPECT_EQ(bytes, original);
+  }
 }
 
 }  // namespace
