@@ -36,10 +36,11 @@ struct DisplayLight {
 };
 
 // `pages` and `vertex_values` are the bake's (BakeResult); `sh`, when not null, its --directional sh
-// pages, so normal maps show. `emission_scale` and `lightmap_is_irradiance` as the bake had them.
+// pages, so normal maps show. `emission_scale`, `lightmap_is_irradiance` and
+// `glazing_transmittance` as the bake had them (BakeOptions).
 DisplayLight display_light(const Scene& scene, const Atlas& atlas, const std::vector<LightmapPage>& pages,
                            const std::vector<std::vector<Rgb>>& vertex_values,
                            const std::vector<std::vector<LightmapPage>>* sh, float emission_scale,
-                           bool lightmap_is_irradiance, const DisplayOptions& options);
+                           bool lightmap_is_irradiance, float glazing_transmittance, const DisplayOptions& options);
 
 }  // namespace radbake

@@ -37,6 +37,23 @@ float texture_texels_per_lightmap_texel(const Scene& scene, const Surface& surfa
                   normals ? texels_per_lightmap_texel(scene, surface, t, m.normal_texture) : 0.0f);
 }
 
+// Barycentric coordinates (of corners 1 and 2) of point p, in triangle t's plane.
+Vec2 barycentric(const Surface& surface, uint32_t t, Vec3 p) {
+  const Vec3 a = surface.corners[3 * t], e1 = surface.corners[3 * t + 1] - a, e2 = surface.corners[3 * t + 2] - a;
+  const Vec3 d = p - a;
+  const float d11 = dot(e1, e1), d12 = dot(e1, e2), d22 = dot(e2, e2), d1 = dot(d, e1), d2 = dot(d, e2);
+  const float det = d11 * d22 - d12 * d12;
+  if (!(std::fabs(det) > 0)) return {1.0f / 3, 1.0f / 3};
+  return {(d22 * d1 - d12 * d2) / det, (d11 * d2 - d12 * d1) / det};
+}
+
+// The irradiance on the other face of a twinned triangle at the point `bary` of this one.
+Rgb irradiance_behind(const Surface& surface, const std::vector<LightmapPage>& lightmap, uint32_t t, Vec2 bary) {
+  const uint32_t other = surface.twin[t];
+  const Vec2 there = barycentric(surface, other, surface.point(t, bary));
+  return sample_bilinear(lightmap[surface.page[other]], surface.lightmap_texel(other, there));
+}
+
 }  // namespace
 
 int automatic_prelit_detail(const Scene& scene, const Surface& surface, int max_page_size, bool normal_maps) {
@@ -70,7 +87,7 @@ PrelitPages prelit_pages(const Scene& scene, const Surface& surface, const std::
   out.detail = options.detail > 0 ? options.detail
                                   : automatic_prelit_detail(scene, surface, options.max_page_size, options.sh != nullptr);
   const int n = out.detail;
-  const MaterialSampler materials(scene, surface, options.emission_scale);
+  const MaterialSampler materials(scene, surface, options.emission_scale, options.glazing_transmittance);
   out.pages.resize(lightmap.size());
   for (size_t p = 0; p < lightmap.size(); ++p) {
     out.pages[p].width = lightmap[p].width * n;
@@ -87,6 +104,8 @@ PrelitPages prelit_pages(const Scene& scene, const Surface& surface, const std::
     for (int k = 0; k < 3; ++k) c[k] = surface.corner_lightmap[3 * t + k] * float(n);
     const float area = cross2(c[1] - c[0], c[2] - c[0]);
     if (area == 0) continue;
+    const bool glazed = options.lightmap_is_irradiance && surface.twin[t] != UINT32_MAX && surface.material[t] >= 0 &&
+                        scene.materials[size_t(surface.material[t])].transmission > 0;
     const int x0 = std::max(0, int(std::floor(std::min({c[0].x, c[1].x, c[2].x}))));
     const int x1 = std::min(page.width - 1, int(std::floor(std::max({c[0].x, c[1].x, c[2].x}))));
     const int y0 = std::max(0, int(std::floor(std::min({c[0].y, c[1].y, c[2].y}))));
@@ -110,7 +129,8 @@ PrelitPages prelit_pages(const Scene& scene, const Surface& surface, const std::
                       .at(materials.mapped_normal(t, bary, spacing));
         }
         const Rgb emitted = materials.emission(t, bary, spacing);
-        const Rgb seen = options.lightmap_is_irradiance ? materials.reflectance(t, bary, spacing) * value + emitted : value;
+        Rgb seen = options.lightmap_is_irradiance ? materials.reflectance(t, bary, spacing) * value + emitted : value;
+        if (glazed) seen += irradiance_behind(surface, lightmap, t, bary) * materials.diffuse_transmittance(t, bary);
         const size_t i = size_t(y) * size_t(page.width) + size_t(x);
         page.texels[i] = seen / kPi;
         page.valid[i] = 1;

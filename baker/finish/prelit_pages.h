@@ -2,6 +2,11 @@
 // (reflectance x irradiance / pi, plus what it emits), on the lightmap's charts. A viewer that
 // knows nothing of lightmaps shows them as an unlit material's base colour.
 //
+// Glazing shows the light it lets through as well: its diffuse transmittance times the irradiance
+// on its other face, over pi, as a pane of frosted glass does (and as three.js's rough transmission
+// shows the engine file's). A clear pane reflects almost nothing and would otherwise show black,
+// since the sky behind it is no surface.
+//
 // They may be finer than the lightmap: light varies slowly and is sampled from the lightmap
 // bilinearly, while the reflectance is read from the material at every pre-lit texel, so a base
 // colour texture keeps its detail up to `detail` times the lightmap's density.
@@ -19,6 +24,7 @@ struct PrelitOptions {
   int detail = 0;              // pre-lit texels per lightmap texel along a side: 1, 2 or 4; 0: automatic
   int max_page_size = 4096;    // a pre-lit page side never passes this (automatic detail only)
   float emission_scale = 1;    // as BakeOptions::emission_scale
+  float glazing_transmittance = -1;  // as BakeOptions::glazing_transmittance
   bool lightmap_is_irradiance = true;  // false: the pages hold radiosity (lm/m2 leaving)
   // --directional sh's pages (c0, c1x, c1y, c1z; directional_lightmaps.h): the irradiance is read
   // for each pre-lit texel's normal, its normal map applied, so the bumps show. Null: the lightmap's.
