@@ -137,11 +137,29 @@ struct SceneSummary {
   size_t materials = 0, textures = 0, lights = 0;
 };
 
+// A camera node of the file, in world space: where a viewer opening the file looks from.
+struct SceneCamera {
+  std::string name;
+  int source = -1;     // index into the file's cameras
+  int node = -1;       // the node that places it
+  Vec3 eye;            // world space, metres
+  Vec3 forward{0, 0, -1}, up{0, 1, 0};  // unit, orthogonal; zero when the node's transform leaves no direction
+  bool orthographic = false;
+  float yfov = 0.8f;   // radians, vertical (perspective)
+  float aspect = 0;    // width / height; 0: the viewer's
+  float xmag = 1, ymag = 1;  // half-extents, metres (orthographic)
+  float znear = 0.01f, zfar = 0;  // metres; zfar 0: infinite
+  bool usable() const { return length(forward) > 0.5f; }
+};
+
 struct Scene {
   std::vector<MeshInstance> instances;
   std::vector<Material> materials;
   std::vector<Image> images;
   std::vector<Light> lights;
+  // The default scene's camera nodes in the order of a depth-first walk from its roots, children
+  // in order: a viewer opens the file on the first.
+  std::vector<SceneCamera> cameras;
   SceneSummary summary;
   std::vector<std::string> warnings;
 };

@@ -81,7 +81,7 @@ radbake::DisplaySummary write_display(const radbake::BakeCommand& cmd, const rad
   const bool sh = cmd.bake.directional == Directional::SphericalHarmonics;
   const DisplayLight light = display_light(scene, atlas, result.pages, result.vertex_values,
                                            sh ? &result.directional : nullptr, cmd.bake.emission_scale, irradiance,
-                                           cmd.bake.glazing_transmittance, cmd.display);
+                                           cmd.bake.glazing_transmittance, &result.display_view, cmd.display);
   DisplaySummary summary;
   summary.exposure = light.exposure;
   if (cmd.display.mode == DisplayMode::None) return summary;

@@ -30,17 +30,19 @@ struct DisplayOptions {
 };
 
 struct DisplayLight {
-  Exposure exposure;          // metered on the flat pre-lit pages
+  Exposure exposure;          // metered on the flat pre-lit pages, as the display camera sees them
   PrelitPages pages;          // what the pages show, normal maps applied with `sh`; empty with DisplayMode::None
   VertexRefinement refined;   // the meshes they are shown on (refined only for vertex light)
 };
 
 // `pages` and `vertex_values` are the bake's (BakeResult); `sh`, when not null, its --directional sh
 // pages, so normal maps show. `emission_scale`, `lightmap_is_irradiance` and
-// `glazing_transmittance` as the bake had them (BakeOptions).
+// `glazing_transmittance` as the bake had them (BakeOptions). `seen`, when not null: the bake's
+// display_view (per page, per lightmap texel), which the exposure meters on.
 DisplayLight display_light(const Scene& scene, const Atlas& atlas, const std::vector<LightmapPage>& pages,
                            const std::vector<std::vector<Rgb>>& vertex_values,
                            const std::vector<std::vector<LightmapPage>>* sh, float emission_scale,
-                           bool lightmap_is_irradiance, float glazing_transmittance, const DisplayOptions& options);
+                           bool lightmap_is_irradiance, float glazing_transmittance,
+                           const std::vector<std::vector<float>>* seen, const DisplayOptions& options);
 
 }  // namespace radbake

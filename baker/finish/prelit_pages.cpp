@@ -104,6 +104,7 @@ PrelitPages prelit_pages(const Scene& scene, const Surface& surface, const std::
     for (int k = 0; k < 3; ++k) c[k] = surface.corner_lightmap[3 * t + k] * float(n);
     const float area = cross2(c[1] - c[0], c[2] - c[0]);
     if (area == 0) continue;
+    const bool blended = material_of(scene, surface.material[t]).alpha_mode == AlphaMode::Blend;
     const bool glazed = options.lightmap_is_irradiance && surface.twin[t] != UINT32_MAX && surface.material[t] >= 0 &&
                         scene.materials[size_t(surface.material[t])].transmission > 0;
     const int x0 = std::max(0, int(std::floor(std::min({c[0].x, c[1].x, c[2].x}))));
@@ -129,7 +130,11 @@ PrelitPages prelit_pages(const Scene& scene, const Surface& surface, const std::
                       .at(materials.mapped_normal(t, bary, spacing));
         }
         const Rgb emitted = materials.emission(t, bary, spacing);
-        Rgb seen = options.lightmap_is_irradiance ? materials.reflectance(t, bary, spacing) * value + emitted : value;
+        Rgb reflected = materials.reflectance(t, bary, spacing) * value;
+        // An alpha-blended surface's reflectance counts only the share of it that is there; the
+        // display file blends it by that share (its alpha), so it shows the light of what is there.
+        if (blended) reflected = reflected / std::max(materials.coverage(t, bary, spacing), 1e-3f);
+        Rgb seen = options.lightmap_is_irradiance ? reflected + emitted : value;
         if (glazed) seen += irradiance_behind(surface, lightmap, t, bary) * materials.diffuse_transmittance(t, bary);
         const size_t i = size_t(y) * size_t(page.width) + size_t(x);
         page.texels[i] = seen / kPi;

@@ -5,7 +5,8 @@
 // Glazing shows the light it lets through as well: its diffuse transmittance times the irradiance
 // on its other face, over pi, as a pane of frosted glass does (and as three.js's rough transmission
 // shows the engine file's). A clear pane reflects almost nothing and would otherwise show black,
-// since the sky behind it is no surface.
+// since the sky behind it is no surface. An alpha-blended surface (glTF's BLEND) shows the light
+// of the part of it that is there: the display file blends it over what is behind by its alpha.
 //
 // They may be finer than the lightmap: light varies slowly and is sampled from the lightmap
 // bilinearly, while the reflectance is read from the material at every pre-lit texel, so a base

@@ -525,6 +525,7 @@ BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& given
     report.light_probe_spacing = result.probes.spacing;
   }
   result.display_camera = clock.run("display camera", [&] { return display_camera(scene, surface, *tracer); });
+  result.display_view = clock.run("display view", [&] { return display_view(scene, result.display_camera, surface, *tracer); });
   report.surfaces = surface_statistics(scene, surface, elements, result.irradiance);
 
   for (const AtlasPage& p : surface.pages) report.page_texels += size_t(p.width) * p.height;

@@ -76,6 +76,7 @@ struct BakeResult {
   LightProbes probes;                              // with BakeOptions::probes
   WorkPlane work_plane;                            // its storeys and rooms index `sensors`
   DisplayCamera display_camera;                    // for a display file whose input has no camera
+  std::vector<std::vector<float>> display_view;    // per page, per texel: the display camera's rays on it
   BakeReport report;
 };
 

@@ -12,6 +12,9 @@ namespace {
 
 constexpr float kEyeHeight = 1.6f;  // metres: a standing eye
 constexpr int kViewRays = 8;        // per side of the grid of rays that judges a view
+constexpr int kMostBlendedLayers = 8;  // alpha-blended surfaces a display ray looks through
+constexpr float kClearance = 0.05f;    // of the room's length: the least distance from the eye to a surface
+constexpr int kBackingSteps = 8;       // positions tried between the room's near end and the wall behind
 
 // The share of a square grid of rays over the field of view, looking along `forward`, that
 // strikes a surface.
@@ -25,6 +28,23 @@ float share_hit(const RayTracer& tracer, Vec3 eye, Vec3 forward, float yfov) {
       hits += !tracer.intersect(eye, normalize(forward + right * u + up * v), 0, INFINITY).missed();
     }
   return float(hits) / float(kViewRays * kViewRays);
+}
+
+// The nearest surface a grid of rays over the field of view, and rays straight up, down and to
+// either side, meet from `eye`.
+float nearest_hit(const RayTracer& tracer, Vec3 eye, Vec3 forward, float yfov) {
+  const Vec3 right = normalize(cross(forward, {0, 1, 0})), up = cross(right, forward);
+  const float half = std::tan(0.5f * yfov);
+  float nearest = INFINITY;
+  auto look = [&](Vec3 direction) {
+    const Hit hit = tracer.intersect(eye, normalize(direction), 0, INFINITY);
+    if (!hit.missed()) nearest = std::min(nearest, hit.distance);
+  };
+  for (int i = 0; i < kViewRays; ++i)
+    for (int j = 0; j < kViewRays; ++j)
+      look(forward + right * (half * (2 * (float(i) + 0.5f) / kViewRays - 1)) + up * (half * (2 * (float(j) + 0.5f) / kViewRays - 1)));
+  for (Vec3 side : {right, -right, up, -up}) look(side);
+  return nearest;
 }
 
 struct Box {
@@ -105,11 +125,21 @@ DisplayCamera display_camera(const Scene& scene, const Surface& surface, const R
     if (score > best_score) best_score = score, best.eye = eye, best.forward = axes[a];
   }
   // Then back, to see more of the room: towards the wall behind (stopping short of it), or, where
-  // the room is open behind (a set's missing wall), to the scene's bounds.
+  // the room is open behind (a set's missing wall), to the scene's bounds; but only as far as
+  // nothing comes within kClearance of the room's length of the eye, ahead or beside it (a sloping
+  // roof, a gable wall: a view from inside a wall sees one texel of it).
   const Vec3 d = best.forward;
   const Hit behind = tracer.intersect(best.eye, -d, 0, INFINITY);
   const float to_bounds = dot(best.eye, d) - dot(d.x + d.y + d.z > 0 ? box.lo : box.hi, d);
-  best.eye = best.eye - d * (0.9f * std::min(behind.missed() ? INFINITY : behind.distance, to_bounds));
+  const float most_back = 0.9f * std::min(behind.missed() ? INFINITY : behind.distance, to_bounds);
+  const float clearance = kClearance * longest;
+  for (int step = kBackingSteps; step >= 0; --step) {
+    const Vec3 eye = best.eye - d * (most_back * float(step) / kBackingSteps);
+    if (step == 0 || nearest_hit(tracer, eye, d, best.yfov) >= clearance) {
+      best.eye = eye;
+      break;
+    }
+  }
   best.in_room = true;
   best.znear = std::max(1e-3f, 0.002f * longest);
   char why[160];
@@ -117,6 +147,55 @@ DisplayCamera display_camera(const Scene& scene, const Surface& surface, const R
                 largest->sensors.size(), plane.sensors.size(), double(longest), options.height);
   best.why = why;
   return best;
+}
+
+std::vector<std::vector<float>> display_view(const Scene& scene, const DisplayCamera& added, const Surface& surface,
+                                             const RayTracer& tracer) {
+  SceneCamera camera;
+  camera.eye = added.eye, camera.forward = added.forward, camera.yfov = added.yfov, camera.znear = added.znear;
+  camera.up = normalize(cross(normalize(cross(added.forward, {0, 1, 0})), added.forward));
+  for (const SceneCamera& c : scene.cameras)
+    if (c.usable()) {
+      camera = c;
+      break;
+    }
+  const Vec3 right = cross(camera.forward, camera.up);
+  const float aspect = camera.aspect > 0 ? camera.aspect : 1.0f;
+  const int rows = kDisplayViewRays, columns = std::max(1, int(std::lround(kDisplayViewRays * aspect)));
+  const float half_height = camera.orthographic ? camera.ymag : std::tan(0.5f * camera.yfov);
+  const float half_width = camera.orthographic ? camera.xmag : half_height * aspect;
+  const float far = camera.zfar > camera.znear ? camera.zfar : INFINITY;
+  std::vector<std::vector<float>> seen(surface.pages.size());
+  size_t hits = 0;
+  for (size_t p = 0; p < seen.size(); ++p) seen[p].assign(size_t(surface.pages[p].width) * surface.pages[p].height, 0.0f);
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i < columns; ++i) {
+      const float u = half_width * (2 * (float(i) + 0.5f) / float(columns) - 1);
+      const float v = half_height * (1 - 2 * (float(j) + 0.5f) / float(rows));
+      const Vec3 origin = camera.orthographic ? camera.eye + right * u + camera.up * v : camera.eye;
+      const Vec3 direction = camera.orthographic ? camera.forward : normalize(camera.forward + right * u + camera.up * v);
+      // Through alpha-blended surfaces (the display file blends them too): each takes its alpha
+      // of the ray, what is behind the rest.
+      float left = 1;
+      float near = camera.znear;
+      for (int layer = 0; layer < kMostBlendedLayers && left > 0; ++layer) {
+        const Hit hit = tracer.intersect(origin, direction, near, far);
+        if (hit.missed()) break;
+        const Material& m = material_of(scene, surface.material[hit.triangle]);
+        const float share = m.alpha_mode == AlphaMode::Blend ? left * std::clamp(m.base_alpha, 0.0f, 1.0f) : left;
+        if (surface.chart[hit.triangle] != UINT32_MAX) {
+          const AtlasPage& page = surface.pages[surface.page[hit.triangle]];
+          const Vec2 at = surface.lightmap_texel(hit.triangle, hit.bary);
+          const int x = std::clamp(int(at.x), 0, page.width - 1), y = std::clamp(int(at.y), 0, page.height - 1);
+          seen[surface.page[hit.triangle]][size_t(y) * size_t(page.width) + size_t(x)] += share;
+          hits += share > 0;
+        }
+        left -= share;
+        near = hit.distance * (1 + 1e-5f) + 1e-5f;
+      }
+    }
+  if (hits == 0) seen.assign(seen.size(), {});
+  return seen;
 }
 
 }  // namespace radbake

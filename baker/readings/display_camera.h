@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "baker/surface/ray_tracer.h"
 #include "baker/surface/surface.h"
@@ -27,5 +28,15 @@ struct DisplayCamera {
 // Where no floor is enclosed: outside, from +Z and a little above, the bounding sphere filling
 // the vertical field of view.
 DisplayCamera display_camera(const Scene& scene, const Surface& surface, const RayTracer& tracer);
+
+// What a viewer sees first on opening the display file: from the camera it opens on (the scene's
+// first usable camera, else `added`), a grid of kDisplayViewRays rays down the vertical field of
+// view (and across it at the camera's aspect ratio, square where it gives none), and per page,
+// per lightmap texel, how many of them strike it (an alpha-blended surface takes its alpha of a ray
+// and passes the rest, as the display file blends it). The exposure meters on it
+// (baker/finish/exposure.h). Empty pages when no ray meets the scene.
+constexpr int kDisplayViewRays = 256;
+std::vector<std::vector<float>> display_view(const Scene& scene, const DisplayCamera& added, const Surface& surface,
+                                             const RayTracer& tracer);
 
 }  // namespace radbake

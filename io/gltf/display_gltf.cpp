@@ -27,25 +27,6 @@ Vec2 transformed(const TextureTransform& t, Vec2 uv) {
   return {c * s.x - r * s.y + t.offset.x, r * s.x + c * s.y + t.offset.y};
 }
 
-// A node's own transform: its matrix, or T * R * S (glTF 2.0 section 5.25).
-Mat4 local_matrix(const tinygltf::Node& node) {
-  Mat4 m;
-  if (node.matrix.size() == 16) {
-    for (int i = 0; i < 16; ++i) m.m[i] = node.matrix[size_t(i)];
-    return m;
-  }
-  const std::vector<double> q = node.rotation.size() == 4 ? node.rotation : std::vector<double>{0, 0, 0, 1};
-  const std::vector<double> s = node.scale.size() == 3 ? node.scale : std::vector<double>{1, 1, 1};
-  const double x = q[0], y = q[1], z = q[2], w = q[3];
-  const double r[9] = {1 - 2 * (y * y + z * z), 2 * (x * y + z * w),     2 * (x * z - y * w),
-                       2 * (x * y - z * w),     1 - 2 * (x * x + z * z), 2 * (y * z + x * w),
-                       2 * (x * z + y * w),     2 * (y * z - x * w),     1 - 2 * (x * x + y * y)};
-  for (int col = 0; col < 3; ++col)
-    for (int row = 0; row < 3; ++row) m.m[col * 4 + row] = r[col * 3 + row] * s[size_t(col)];
-  for (size_t k = 0; k < 3 && node.translation.size() == 3; ++k) m.m[12 + k] = node.translation[k];
-  return m;
-}
-
 // The unit quaternion (x, y, z, w) of the rotation whose columns are `right`, `up` and `back`.
 json quaternion(Vec3 right, Vec3 up, Vec3 back) {
   const double m00 = right.x, m10 = right.y, m20 = right.z, m01 = up.x, m11 = up.y, m21 = up.z, m02 = back.x,
@@ -135,38 +116,16 @@ class DisplayWriter {
   std::string add_cameras(json& scene_nodes) {
     size_t kept = 0, degenerate = 0;
     std::string first;
-    if (in_.source) {
-      const tinygltf::Model& model = in_.source->model;
-      std::vector<int> roots;
-      if (!model.scenes.empty()) {
-        roots = model.scenes[size_t(std::max(model.defaultScene, 0))].nodes;
-      } else {
-        std::vector<char> is_child(model.nodes.size(), 0);
-        for (const tinygltf::Node& n : model.nodes)
-          for (int c : n.children) is_child[size_t(c)] = 1;
-        for (size_t i = 0; i < model.nodes.size(); ++i)
-          if (!is_child[i]) roots.push_back(int(i));
-      }
-      std::vector<std::pair<int, Mat4>> stack;
-      for (auto root = roots.rbegin(); root != roots.rend(); ++root) stack.push_back({*root, Mat4{}});
-      while (!stack.empty()) {
-        const auto [index, parent] = stack.back();
-        stack.pop_back();
-        const tinygltf::Node& node = model.nodes[size_t(index)];
-        const Mat4 world = parent * local_matrix(node);
-        if (node.camera >= 0) {
-          const json camera = camera_json(model.cameras[size_t(node.camera)]);
-          const std::string name = node.name.empty() ? "camera " + std::to_string(node.camera) : node.name;
-          if (add_camera(camera, name, {world.m[12], world.m[13], world.m[14]}, world.transform_direction({0, 0, -1}),
-                         world.transform_direction({0, 1, 0}), scene_nodes)) {
-            if (kept++ == 0) first = name;
-          } else {
-            ++degenerate;
-          }
+    if (in_.source)
+      for (const SceneCamera& c : in_.scene->cameras) {
+        if (!c.usable()) {
+          ++degenerate;
+          continue;
         }
-        for (auto child = node.children.rbegin(); child != node.children.rend(); ++child) stack.push_back({*child, world});
+        add_camera(camera_json(in_.source->model.cameras[size_t(c.source)]), c.name, {c.eye.x, c.eye.y, c.eye.z},
+                   c.forward, c.up, scene_nodes);
+        if (kept++ == 0) first = c.name;
       }
-    }
     const std::string left_out =
         degenerate > 0 ? " (" + std::to_string(degenerate) + " left out: their nodes' scale leaves no view direction)" : "";
     if (kept > 0)
@@ -180,18 +139,14 @@ class DisplayWriter {
     return "added, the input has none" + left_out + ": " + c.why;
   }
 
-  // A root node at `translation` looking along `forward` with `up` as near up as it can be. False
-  // when the two give no orientation.
-  bool add_camera(const json& camera, const std::string& name, const json& translation, Vec3 forward, Vec3 up,
+  // A root node at `translation` looking along `forward` with `up` as near up as it can be.
+  void add_camera(const json& camera, const std::string& name, const json& translation, Vec3 forward, Vec3 up,
                   json& scene_nodes) {
-    const Vec3 right = cross(forward, up);
-    if (!(length(forward) > 0) || !(length(right) > 1e-6f * length(forward) * length(up))) return false;
-    const Vec3 f = normalize(forward), x = normalize(right), y = cross(x, f);
+    const Vec3 f = normalize(forward), x = normalize(cross(forward, up)), y = cross(x, f);
     doc_["cameras"].push_back(camera);
     doc_["nodes"].push_back({{"name", name}, {"camera", doc_["cameras"].size() - 1},
                              {"translation", translation}, {"rotation", quaternion(x, y, -f)}});
     scene_nodes.push_back(doc_["nodes"].size() - 1);
-    return true;
   }
 
   void add_prelit_pages() {
@@ -226,21 +181,38 @@ class DisplayWriter {
     return inst.back_of < 0 && !has_back_[i] && material_of(*in_.scene, inst.material).double_sided;
   }
 
-  int page_material(int page, bool two_sided) {
-    auto key = std::make_pair(page, two_sided);
+  int page_material(int page, bool two_sided, float alpha) {
+    auto key = std::make_tuple(page, two_sided, alpha);
     auto found = page_materials_.find(key);
     if (found != page_materials_.end()) return found->second;
     json m = unlit("prelit page " + std::to_string(page) + (two_sided ? " (double-sided)" : ""), two_sided);
     m["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", page}};
+    blend_by_alpha(m, alpha);
     doc_["materials"].push_back(m);
     return page_materials_[key] = int(doc_["materials"].size() - 1);
+  }
+
+  // An alpha-blended surface (glass modelled as BLEND) is blended here too, by its base alpha, so
+  // what is behind it shows as a viewer shows the engine file (its texture's alpha is not read).
+  float alpha_of(size_t instance) const {
+    const Material& m = material_of(*in_.scene, in_.scene->instances[instance].material);
+    return m.alpha_mode == AlphaMode::Blend ? std::clamp(m.base_alpha, 0.0f, 1.0f) : 1.0f;
+  }
+
+  static void blend_by_alpha(json& m, float alpha) {
+    if (!(alpha < 1)) return;
+    m["name"] = m["name"].get<std::string>() + " (blended)";
+    m["alphaMode"] = "BLEND";
+    json& factor = m["pbrMetallicRoughness"]["baseColorFactor"];
+    if (!factor.is_array()) factor = {1.0, 1.0, 1.0, 1.0};
+    factor[3] = alpha;
   }
 
   // Vertex-lit: the material's diffuse reflectance as the unlit base colour (its texture too),
   // which COLOR_0 (the pre-lit light on a white surface) multiplies. Emitters are shown white,
   // their luminance in COLOR_0.
-  int vertex_material(int material, bool two_sided, bool textured) {
-    auto key = std::make_tuple(material, two_sided, textured);
+  int vertex_material(int material, bool two_sided, bool textured, float alpha) {
+    auto key = std::make_tuple(material, two_sided, textured, alpha);
     auto found = vertex_materials_.find(key);
     if (found != vertex_materials_.end()) return found->second;
     const Material& source = material_of(*in_.scene, material);
@@ -250,6 +222,7 @@ class DisplayWriter {
       m["pbrMetallicRoughness"]["baseColorFactor"] = {albedo.x, albedo.y, albedo.z, 1.0};
       if (textured) m["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", base_texture(source.base_color_texture)}};
     }
+    blend_by_alpha(m, alpha);
     doc_["materials"].push_back(m);
     return vertex_materials_[key] = int(doc_["materials"].size() - 1);
   }
@@ -298,7 +271,7 @@ class DisplayWriter {
         const Vec2 uv = blend<Vec2>(v, [&](uint32_t atlas_vertex) { return lm.uvs[atlas_vertex]; });
         uvs.insert(uvs.end(), {uv.x, uv.y});
       }
-      material = page_material(lm.page, double_sided(i));
+      material = page_material(lm.page, double_sided(i), alpha_of(i));
     } else {
       const Material& source = material_of(*in_.scene, inst.material);
       const TextureRef& ref = source.base_color_texture;
@@ -321,7 +294,7 @@ class DisplayWriter {
         if (!reflects && in_.lightmap_is_irradiance) seen = seen * (source.base_color * (1 - source.metallic)) + emitted;
         for (int c = 0; c < 3; ++c) colors.push_back(std::clamp(seen[c] * in_.exposure.exposure, 0.0f, 1.0f));
       }
-      material = vertex_material(inst.material, double_sided(i), textured);
+      material = vertex_material(inst.material, double_sided(i), textured, alpha_of(i));
       attributes["COLOR_0"] = bin_.add(as_bytes(colors), n, "VEC3", kFloat, false, kArrayBuffer, false);
     }
     if (!uvs.empty()) attributes["TEXCOORD_0"] = bin_.add(as_bytes(uvs), n, "VEC2", kFloat, false, kArrayBuffer, false);
@@ -377,8 +350,8 @@ class DisplayWriter {
   json doc_;
   BinaryWriter bin_;
   std::vector<uint8_t> has_back_;
-  std::map<std::pair<int, bool>, int> page_materials_;
-  std::map<std::tuple<int, bool, bool>, int> vertex_materials_;
+  std::map<std::tuple<int, bool, float>, int> page_materials_;
+  std::map<std::tuple<int, bool, bool, float>, int> vertex_materials_;
   std::map<int, int> image_textures_;
   size_t triangles_ = 0;
 };

@@ -756,15 +756,24 @@ class DocumentCheck {
 
   // KHR_materials_pbrSpecularGlossiness is archived: beside any other extension (MOZ_lightmap,
   // which every baked material gets) the validator warns MULTIPLE_EXTENSIONS, and current viewers
-  // ignore it. A diffuse bake needs only its diffuse part, so the material becomes the
-  // metallic-roughness one the extension's own conversion gives: base colour = diffuse, metallic 0,
-  // roughness 1 - glossiness. Its specular colour and texture have no metallic-roughness form.
-  void specular_glossiness_to_metallic_roughness(json& m, const std::string& at) {
+  // (three.js since r147, Blender's importer) show the metallic-roughness material instead. So the
+  // extension is dropped; a material that gives no metallic-roughness fallback gets the one its
+  // diffuse part makes (base colour = diffuse, metallic 0, roughness 1 - glossiness), which is
+  // all a diffuse bake reads. A fallback the file gives is kept as it is: exporters put what they
+  // mean there (assimp writes a glass's alpha only into it).
+  void drop_specular_glossiness(json& m, const std::string& at) {
     json* all = find(m, "extensions");
     if (!all || !all->is_object() || !all->contains(kSpecularGlossiness)) return;
     json spec = (*all)[kSpecularGlossiness];
     all->erase(kSpecularGlossiness);
     if (all->empty()) m.erase("extensions");
+    converted_specular_glossiness_ = true;
+    changed_ = true;
+    const std::string what = "dropped " + at + "/extensions/" + kSpecularGlossiness + " (archived)";
+    if (m.contains("pbrMetallicRoughness")) {
+      warnings_.push_back(what + "; its metallic-roughness material is the one current viewers show, kept");
+      return;
+    }
     json pbr = json::object();
     if (spec.is_object()) {
       if (spec.contains("diffuseFactor")) pbr["baseColorFactor"] = spec["diffuseFactor"];
@@ -774,15 +783,13 @@ class DocumentCheck {
     }
     pbr["metallicFactor"] = 0.0;
     m["pbrMetallicRoughness"] = pbr;
-    converted_specular_glossiness_ = true;
-    changed_ = true;
-    warnings_.push_back("converted " + at + " from specular-glossiness (" + kSpecularGlossiness +
-                        ", archived) to metallic-roughness: base colour = diffuse, metallic 0, roughness 1 - glossiness");
+    warnings_.push_back(what + "; it gave no metallic-roughness material, so its diffuse part became one: base colour = "
+                        "diffuse, metallic 0, roughness 1 - glossiness");
   }
 
   void material(json& m, const std::string& at) {
     const int64_t self = std::stoll(at.substr(at.rfind('/') + 1));
-    specular_glossiness_to_metallic_roughness(m, at);
+    drop_specular_glossiness(m, at);
     if (json* pbr = object(m, "pbrMetallicRoughness", at)) {
       const std::string p = child(at, "pbrMetallicRoughness");
       numbers(*pbr, "baseColorFactor", p, 4, 0, 1);

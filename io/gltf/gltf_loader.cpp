@@ -215,6 +215,7 @@ class SceneBuilder {
       auto light = node.extensions.find("KHR_lights_punctual");
       if (light != node.extensions.end() && light->second.Has("light"))
         add_light(light->second.Get("light").GetNumberAsInt(), index, world);
+      if (node.camera >= 0) add_camera(node.camera, index, world);
       for (auto child = node.children.rbegin(); child != node.children.rend(); ++child) stack.push_back({*child, world});
     }
   }
@@ -450,6 +451,37 @@ class SceneBuilder {
     if (light.type != LightType::Point && !(length(light.direction) > 0.5f))
       refuse(file_, node_pointer(node_index), "light '" + light.name + "' has a degenerate direction (its node scales to zero)");
     scene_.lights.push_back(light);
+  }
+
+  // The camera looks down its node's -Z with +Y up (glTF 2.0 section 3.10.1); the node's scale
+  // only lengthens the axes, a shear or a zero scale leaves no orientation (kept, not usable).
+  void add_camera(int index, int node_index, const Mat4& world) {
+    const tinygltf::Camera& in = model_.cameras[size_t(index)];
+    SceneCamera c;
+    c.name = in.name.empty() ? (model_.nodes[size_t(node_index)].name.empty() ? "camera " + std::to_string(index)
+                                                                           : clipped(model_.nodes[size_t(node_index)].name))
+                             : clipped(in.name);
+    c.source = index;
+    c.node = node_index;
+    c.eye = world.transform_point({0, 0, 0});
+    const Vec3 forward = world.transform_direction({0, 0, -1}), up = world.transform_direction({0, 1, 0});
+    const Vec3 right = cross(forward, up);
+    if (length(forward) > 0 && length(right) > 1e-6f * length(forward) * length(up)) {
+      c.forward = normalize(forward);
+      const Vec3 x = normalize(right);
+      c.up = cross(x, c.forward);
+    } else {
+      c.forward = c.up = {0, 0, 0};
+    }
+    c.orthographic = in.type == "orthographic";
+    if (c.orthographic) {
+      c.xmag = float(in.orthographic.xmag), c.ymag = float(in.orthographic.ymag);
+      c.znear = float(in.orthographic.znear), c.zfar = float(in.orthographic.zfar);
+    } else {
+      c.yfov = float(in.perspective.yfov), c.aspect = float(in.perspective.aspectRatio);
+      c.znear = float(in.perspective.znear), c.zfar = float(in.perspective.zfar);
+    }
+    scene_.cameras.push_back(c);
   }
 
   TextureRef texture_ref(int texture_index, int tex_coord, const tinygltf::ExtensionMap& extensions) {

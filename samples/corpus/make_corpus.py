@@ -17,6 +17,8 @@ import struct
 import subprocess
 import sys
 
+import quake3_map
+
 MODELS = "/usr/share/assimp/models"
 
 # name: (what it stands for, source file, the light added)
@@ -27,12 +29,13 @@ SCENES = {
     "teapots": ("kit-bashed props: one teapot instanced by COLLADA instance nodes", "Collada/teapot_instancenodes.DAE", "lamp"),
     "milk_truck": ("a vehicle: Cesium's milk truck, glTF 1.0, textured", "glTF/CesiumMilkTruck/CesiumMilkTruck.gltf", "sun"),
     "duck": ("a textured game asset: the COLLADA duck", "Collada/duck.dae", "lamp"),
+    "arena": ("a game level: OpenArena's am_underworks2, an underground industrial arena, Quake 3 BSP",
+              "openarena:am_underworks2", "player_lamps"),
 }
+# OpenArena's archives (Debian's openarena-088-data, openarena-081-textures), later ones winning.
+OPENARENA = "/usr/share/games/openarena/baseoa"
+OPENARENA_PK3S = ["pak4-textures.pk3", "pak6-patch088.pk3"]
 
-# Where a person would look from, for scenes one looks at from inside (the tests' three.js views;
-# the others are seen from outside): in the FZK-Haus, the ground floor's largest room (the living
-# room, 45 m2, centred at x 5.83, z -2.80 by radbake's work plane), standing, facing its garden doors.
-EYES = {"fzk_haus": {"position": [5.83, 1.6, -2.8], "target": [5.83, 1.3, 0.2], "fov": 70}}
 # The walls of a building: its outside is their box (tests check work-plane points lie inside it).
 WALLS = {"fzk_haus": "IfcWall"}
 
@@ -42,6 +45,10 @@ WALLS = {"fzk_haus": "IfcWall"}
 SUN_LUX = 60000.0
 SUN_ELEVATION, SUN_AZIMUTH = math.radians(35), math.radians(225)  # azimuth from north (-Z) through east (+X)
 LAMP_LUX_AT_CENTRE = 300.0
+# A game level keeps no light of its own (q3map2 bakes its lights and drops them): a lamp of
+# PLAYER_LAMP_CD at head height, PLAYER_LAMP_HEIGHT above each player start (which stands
+# 0.75 m above the floor), lights the places the level is played in.
+PLAYER_LAMP_CD, PLAYER_LAMP_HEIGHT = 200.0, 1.0
 
 
 def read_gltf(path):
@@ -128,6 +135,27 @@ def look_rotation(direction):
     return [ax / n, ay / n, az / n, w / n]
 
 
+def add_punctual(doc, light, node):
+    lights = doc.setdefault("extensions", {}).setdefault("KHR_lights_punctual", {}).setdefault("lights", [])
+    node["extensions"] = {"KHR_lights_punctual": {"light": len(lights)}}
+    lights.append(light)
+    doc.setdefault("nodes", []).append(node)
+    doc["scenes"][doc.get("scene", 0)].setdefault("nodes", []).append(len(doc["nodes"]) - 1)
+    used = doc.setdefault("extensionsUsed", [])
+    if "KHR_lights_punctual" not in used:
+        used.append("KHR_lights_punctual")
+
+
+def add_player_lamps(doc, starts):
+    """A point lamp over each player start (PLAYER_LAMP_*); returns its description and the bounds."""
+    for k, (x, y, z) in enumerate(starts):
+        add_punctual(doc, {"name": f"added lamp {k}", "type": "point", "intensity": PLAYER_LAMP_CD},
+                     {"name": f"added lamp {k}", "translation": [x, y + PLAYER_LAMP_HEIGHT, z]})
+    lo, hi = world_bounds(doc)
+    return (f"{len(starts)} point lamps of {PLAYER_LAMP_CD:g} cd, {PLAYER_LAMP_HEIGHT:g} m above each player start",
+            {"min": lo, "max": hi})
+
+
 def add_light(doc, kind):
     """Adds one KHR_lights_punctual light (see SUN_*, LAMP_*); returns its description."""
     lo, hi = world_bounds(doc)
@@ -146,14 +174,7 @@ def add_light(doc, kind):
         light = {"name": "added lamp", "type": "point", "intensity": LAMP_LUX_AT_CENTRE * distance * distance}
         node = {"name": "added lamp", "translation": position}
         said = f"point lamp, {light['intensity']:.4g} cd, {distance:.3g} m from the model's centre ({LAMP_LUX_AT_CENTRE:g} lx there)"
-    lights = doc.setdefault("extensions", {}).setdefault("KHR_lights_punctual", {}).setdefault("lights", [])
-    node["extensions"] = {"KHR_lights_punctual": {"light": len(lights)}}
-    lights.append(light)
-    doc.setdefault("nodes", []).append(node)
-    doc["scenes"][doc.get("scene", 0)].setdefault("nodes", []).append(len(doc["nodes"]) - 1)
-    used = doc.setdefault("extensionsUsed", [])
-    if "KHR_lights_punctual" not in used:
-        used.append("KHR_lights_punctual")
+    add_punctual(doc, light, node)
     return said, {"min": lo, "max": hi}
 
 
@@ -170,7 +191,10 @@ def make(name, source, light, folder):
     out = os.path.join(folder, name)
     shutil.rmtree(out, ignore_errors=True)
     os.makedirs(out)
-    src = os.path.join(MODELS, source)
+    src, starts = os.path.join(MODELS, source), []
+    if source.startswith("openarena:"):
+        src, starts = quake3_map.convert(source.split(":")[1], os.path.join(out, "map"),
+                                         [os.path.join(OPENARENA, p) for p in OPENARENA_PK3S])
     if source.endswith(".glb"):
         doc, binary = read_gltf(src)
         said, bounds = add_light(doc, light)
@@ -191,7 +215,9 @@ def make(name, source, light, folder):
             if os.path.exists(found):
                 shutil.copy(found, os.path.join(out, os.path.basename(uri)))
                 image["uri"] = os.path.basename(uri)
-    said, bounds = add_light(doc, light)
+    if source.startswith("openarena:"):
+        shutil.rmtree(os.path.dirname(src))  # the OBJ, its MTL and textures: copied into the glTF's folder
+    said, bounds = add_player_lamps(doc, starts) if light == "player_lamps" else add_light(doc, light)
     with open(converted, "w") as f:
         json.dump(doc, f, indent=1)
     return converted, said, bounds, "converted by " + assimp_version()
@@ -205,10 +231,10 @@ def main():
     manifest = []
     for name, (kind, source, light) in SCENES.items():
         path, said, bounds, how = make(name, source, light, folder)
+        origin = ("openarena (openarena-088-data, openarena-081-textures): maps/" + source.split(":")[1] + ".bsp"
+                  if source.startswith("openarena:") else "assimp-testmodels: " + source)
         entry = {"name": name, "kind": kind, "file": os.path.relpath(path, folder),
-                 "source": "assimp-testmodels: " + source, "made": how, "light_added": said, "bounds_m": bounds}
-        if name in EYES:
-            entry["eye"] = EYES[name]
+                 "source": origin, "made": how, "light_added": said, "bounds_m": bounds}
         if name in WALLS:
             lo, hi = world_bounds(read_gltf(path)[0], WALLS[name])
             entry["walls_bounds_m"] = {"min": lo, "max": hi}

@@ -1,12 +1,24 @@
-# The real-scene corpus (samples/corpus, issue 29): made from Debian's assimp-testmodels by
-# samples/corpus/make_corpus.py into build/corpus (fixture corpus.make), each scene baked with the
-# defaults and checked (tests/corpus/bake_scene.py: validator, atlas, energy balance, clipping),
-# then all seen in three.js, stock and with the plugin (tests/corpus/three.test.mjs); the house's
-# daylight run (tests/corpus/daylight_scene.py). `ctest -L corpus`.
+# The real-scene corpus (samples/corpus, issue 29): made from Debian's assimp-testmodels and
+# OpenArena packages by samples/corpus/make_corpus.py into build/corpus (fixture corpus.make),
+# each scene baked with the defaults and checked (tests/corpus/bake_scene.py: validator, atlas,
+# energy balance, clipping), then all seen in three.js, stock and with the plugin
+# (tests/corpus/three.test.mjs); the house's daylight run (tests/corpus/daylight_scene.py).
+# `ctest -L corpus`.
 set(RADBAKE_CORPUS_DIR ${CMAKE_BINARY_DIR}/corpus)
 set(RADBAKE_CORPUS_BAKES ${CMAKE_BINARY_DIR}/corpus_bakes)
 add_test(NAME corpus.make COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/samples/corpus/make_corpus.py ${RADBAKE_CORPUS_DIR})
 set_tests_properties(corpus.make PROPERTIES FIXTURES_SETUP corpus_scenes LABELS corpus TIMEOUT 300)
+foreach(scene fzk_haus cylinder_engine teapots milk_truck duck arena)
+  add_test(NAME corpus.bake.${scene}
+    COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/corpus/bake_scene.py $<TARGET_FILE:radbake>
+            ${CMAKE_CURRENT_SOURCE_DIR}/tools/validate_gltf.mjs ${RADBAKE_CORPUS_DIR} ${scene} ${RADBAKE_CORPUS_BAKES})
+  set_tests_properties(corpus.bake.${scene} PROPERTIES FIXTURES_REQUIRED corpus_scenes FIXTURES_SETUP corpus_bakes
+                       LABELS corpus TIMEOUT 300)
+endforeach()
+add_test(NAME corpus.three
+  COMMAND node ${CMAKE_CURRENT_SOURCE_DIR}/corpus/three.test.mjs --corpus ${RADBAKE_CORPUS_DIR}
+          --bakes ${RADBAKE_CORPUS_BAKES} --work ${CMAKE_BINARY_DIR}/corpus_shots)
+set_tests_properties(corpus.three PROPERTIES FIXTURES_REQUIRED "corpus_scenes;corpus_bakes" LABELS "corpus;web" TIMEOUT 600)
 add_test(NAME corpus.daylight.fzk_haus
   COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/corpus/daylight_scene.py $<TARGET_FILE:radbake>
           ${RADBAKE_CORPUS_DIR} fzk_haus ${RADBAKE_CORPUS_BAKES} 2)

@@ -124,7 +124,9 @@ export async function gltfCamera(file) {
   const [x, y, z, w] = node.rotation || [0, 0, 0, 1];
   // The camera looks down its local -Z: rotate (0, 0, -1) by the quaternion.
   const dir = [-(2 * (x * z + w * y)), -(2 * (y * z - w * x)), -(1 - 2 * (x * x + y * y))];
-  return { position: t, target: t.map((v, i) => v + dir[i]), fov: (cam.perspective.yfov * 180) / Math.PI, near: cam.perspective.znear };
+  // No zfar is glTF's infinite projection: a far plane ten million near planes away stands for it.
+  const far = cam.perspective.zfar || cam.perspective.znear * 1e7;
+  return { position: t, target: t.map((v, i) => v + dir[i]), fov: (cam.perspective.yfov * 180) / Math.PI, near: cam.perspective.znear, far };
 }
 
 export async function openRenderer({ executablePath = CHROMIUM_PATH, args = [] } = {}) {

@@ -74,5 +74,35 @@ TEST(Exposure, UncoveredTexelsAndGivenExposures) {
   EXPECT_NE(dark.method.find("nothing is lit"), std::string::npos);
 }
 
+// A building's sunlit outside (1000 cd/m2) is 60% of its lit area; the camera a display file
+// opens on stands inside, where it sees the rooms (10 cd/m2) and a little of the outside through
+// a window. Metered on what that camera sees, the rooms show at the key and the window is the
+// share allowed to clip; metered on the area, the outside set the exposure and the rooms were
+// 100 times too dark.
+TEST(Exposure, MetersWhatTheDisplayCameraSees) {
+  const LightmapPage page = page_of(1000, 0, 600, 1000);
+  std::vector<std::vector<float>> seen{std::vector<float>(1000, 0.0f)};
+  for (size_t i = 0; i < 400; ++i) seen[0][i] = 3;  // the rooms: 1200 rays
+  seen[0][999] = 12;                               // the window: 1% of the rays
+  const Exposure inside = choose_exposure({page}, {}, &seen);
+  EXPECT_TRUE(inside.metered_view);
+  EXPECT_FALSE(inside.limited_by_highlights);
+  EXPECT_FLOAT_EQ(inside.exposure, 0.18f / 10);
+  EXPECT_NE(inside.method.find("what the display camera sees"), std::string::npos) << inside.method;
+  const Exposure area = choose_exposure({page}, {});
+  EXPECT_FALSE(area.metered_view);
+  EXPECT_FLOAT_EQ(area.exposure, 0.18f / 1000);
+  // The outside through more of the view (10% of the rays): it sets the exposure, clipping on no
+  // more than 2% of what is seen.
+  seen[0][999] = 0;
+  for (size_t i = 900; i < 1000; ++i) seen[0][i] = 1.34f;  // 134 of 1334 rays
+  const Exposure window = choose_exposure({page}, {}, &seen);
+  EXPECT_TRUE(window.limited_by_highlights);
+  EXPECT_FLOAT_EQ(window.exposure, 1.0f / 1000);
+  // A camera that sees no surface leaves the area metered.
+  const std::vector<std::vector<float>> nothing{std::vector<float>(1000, 0.0f)};
+  EXPECT_FLOAT_EQ(choose_exposure({page}, {}, &nothing).exposure, area.exposure);
+}
+
 }  // namespace
 }  // namespace radbake

@@ -382,36 +382,52 @@ TEST(OutputValidity, ExtTextureWebpMustNameWebp) {
 }
 
 // KHR_materials_pbrSpecularGlossiness (archived; beside MOZ_lightmap the validator warns
-// MULTIPLE_EXTENSIONS) becomes metallic-roughness with its diffuse as the base colour, which the
-// bake reads too; the extension leaves extensionsUsed and extensionsRequired.
-TEST(OutputValidity, SpecularGlossinessBecomesMetallicRoughness) {
+// MULTIPLE_EXTENSIONS) is dropped, and leaves extensionsUsed and extensionsRequired. The floor
+// keeps the metallic-roughness material it gives beside it (what current viewers show: assimp
+// writes a glass's alpha only there); a wall that gives none gets its diffuse part as one, which
+// the bake reads too.
+TEST(OutputValidity, SpecularGlossinessIsDroppedForMetallicRoughness) {
   Room room;
+  const json red = {1, 0, 0, 0.5}, diffuse = {0.25, 0.5, 0.75, 1.0};
   json& floor = room.doc["materials"][0];
-  const json diffuse = {0.25, 0.5, 0.75, 1.0};
-  floor["pbrMetallicRoughness"]["baseColorFactor"] = {1, 0, 0, 1};  // what a viewer without the extension shows
-  floor["extensions"]["KHR_materials_pbrSpecularGlossiness"] = {
-      {"diffuseFactor", diffuse}, {"specularFactor", {0.5, 0.5, 0.5}}, {"glossinessFactor", 0.25}};
+  floor["pbrMetallicRoughness"]["baseColorFactor"] = red;
+  floor["extensions"]["KHR_materials_pbrSpecularGlossiness"] = {{"diffuseFactor", diffuse}};
+  room.doc["materials"].push_back({{"name", "spec-gloss wall"},
+                                   {"extensions", {{"KHR_materials_pbrSpecularGlossiness",
+                                                    {{"diffuseFactor", diffuse}, {"specularFactor", {0.5, 0.5, 0.5}},
+                                                     {"glossinessFactor", 0.25}}}}}});
+  room.doc["meshes"][0]["primitives"][0]["material"] = room.doc["materials"].size() - 1;
   for (const char* list : {"extensionsUsed", "extensionsRequired"}) room.doc[list].push_back("KHR_materials_pbrSpecularGlossiness");
   const std::string input = room.save("specular_glossiness");
   const Baked b = bake(input);
-  EXPECT_EQ(b.warnings_naming("/materials/0"), 1u) << b.run.err;
+  EXPECT_EQ(b.warnings_naming("/materials/0/extensions/KHR_materials_pbrSpecularGlossiness"), 1u) << b.run.err;
+  EXPECT_EQ(b.warnings_naming("/materials/" + std::to_string(room.doc["materials"].size() - 1) +
+                              "/extensions/KHR_materials_pbrSpecularGlossiness"), 1u) << b.run.err;
   expect_valid(b);
   for (const char* list : {"extensionsUsed", "extensionsRequired"})
     for (const json& name : b.doc.value(list, json::array())) EXPECT_NE(name, "KHR_materials_pbrSpecularGlossiness") << list;
-  size_t floors = 0;
+  size_t floors = 0, walls = 0;
   for (const json& material : b.doc["materials"]) {
     EXPECT_FALSE(material.contains("extensions") && material["extensions"].contains("KHR_materials_pbrSpecularGlossiness"));
-    if (material["name"].get<std::string>().rfind("floor", 0) != 0) continue;
-    ++floors;
-    EXPECT_EQ(material["pbrMetallicRoughness"]["baseColorFactor"], diffuse);
-    EXPECT_EQ(material["pbrMetallicRoughness"]["metallicFactor"], 0.0);
-    EXPECT_EQ(material["pbrMetallicRoughness"]["roughnessFactor"], 0.75);  // 1 - glossiness
+    const std::string name = material["name"];
+    if (name.rfind("floor", 0) == 0) {
+      ++floors;
+      EXPECT_EQ(material["pbrMetallicRoughness"]["baseColorFactor"], red);
+    } else if (name.rfind("spec-gloss wall", 0) == 0) {
+      ++walls;
+      EXPECT_EQ(material["pbrMetallicRoughness"]["baseColorFactor"], diffuse);
+      EXPECT_EQ(material["pbrMetallicRoughness"]["metallicFactor"], 0.0);
+      EXPECT_EQ(material["pbrMetallicRoughness"]["roughnessFactor"], 0.75);  // 1 - glossiness
+    }
   }
   EXPECT_GT(floors, 0u);
-  // The bake reflects the diffuse colour, not the fallback's red.
+  EXPECT_GT(walls, 0u);
+  // The bake reads what the output says: the floor's red, the wall's diffuse.
   const Scene scene = load_gltf(input).scene;
-  EXPECT_FLOAT_EQ(scene.materials[0].base_color.y, 0.5f);
-  EXPECT_FLOAT_EQ(scene.materials[0].base_color.z, 0.75f);
+  EXPECT_FLOAT_EQ(scene.materials[0].base_color.x, 1.0f);
+  EXPECT_FLOAT_EQ(scene.materials[0].base_alpha, 0.5f);
+  EXPECT_FLOAT_EQ(scene.materials.back().base_color.y, 0.5f);
+  EXPECT_FLOAT_EQ(scene.materials.back().base_color.z, 0.75f);
 }
 
 // PNG chunks the validator flags (IMAGE_FEATURES_UNSUPPORTED: cHRM other than sRGB's, gAMA other
