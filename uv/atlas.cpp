@@ -133,6 +133,7 @@ std::vector<Chart> make_charts(const std::vector<MeshView>& meshes, const std::v
   // Below about 4 x 4 texels, or 4 texels across, a chart holds less than its padding costs.
   chart_options.small_chart_area = 16.0f / (density * density);
   chart_options.sliver_width = 4.0f / density;
+  chart_options.texel_size = 1.0f / density;
   std::vector<Chart> charts;
   double triangles = 0, done = 0;
   for (size_t m = 0; m < meshes.size(); ++m) triangles += generate[m] ? double(meshes[m].triangle_count) : 0;

@@ -45,6 +45,7 @@ struct ChartOptions {
   float hard_edge_degrees = 40;             // edges folding more than this are always seams
   float small_chart_area = 0;               // m^2; charts smaller than this merge into a neighbour
   float sliver_width = 0;                   // m; flattened charts thinner than this join a neighbour
+  float texel_size = 0;                     // m; pieces thinner than this join a neighbour across any edge
                                             // when the two flatten together without more stretch
   // A curved chart holds at most this share of its mesh's area, so no chart wraps round a shape
   // (the top of a torus is a ring of normals all within any cone); flat charts are not capped.

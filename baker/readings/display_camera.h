@@ -35,7 +35,7 @@ DisplayCamera display_camera(const Scene& scene, const Surface& surface, const R
 // per lightmap texel, how many of them strike it (an alpha-blended surface takes its alpha of a ray
 // and passes the rest, as the display file blends it). The exposure meters on it
 // (baker/finish/exposure.h). Empty pages when no ray meets the scene.
-constexpr int kDisplayViewRays = 256;
+constexpr int kDisplayViewRays = 128;
 std::vector<std::vector<float>> display_view(const Scene& scene, const DisplayCamera& added, const Surface& surface,
                                              const RayTracer& tracer);
 

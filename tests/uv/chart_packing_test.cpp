@@ -86,5 +86,29 @@ TEST(ChartPacking, TheStripsOfAThinRodJoinIntoOneChartWithoutStretch) {
   EXPECT_EQ(atlas.stats.padding_violations, 0u);
 }
 
+// A wall 2 m square with a lip folded square along its top edge, at 10 texels/m. A 1 cm lip is
+// a tenth of a texel: it hinges onto the wall across the fold, one chart, unfolded without
+// stretch. A 30 cm lip is three texels, which a texel can tell apart from the wall: the fold
+// stays a seam, two charts.
+Atlas wall_with_lip(float lip) {
+  Scene scene;
+  const int m = test::add_material(scene, {0.5f, 0.5f, 0.5f});
+  test::add_mesh(scene, {{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}, {2, 2, lip}, {0, 2, lip}},
+                 {0, 1, 2, 0, 2, 3, 3, 2, 4, 3, 4, 5}, m, "wall");
+  AtlasOptions options;
+  options.texel_density = 10;
+  return test::unwrap(scene, options);
+}
+
+TEST(ChartPacking, APieceThinnerThanATexelHingesOntoItsNeighbourAcrossAFold) {
+  const Atlas thin = wall_with_lip(0.01f);
+  EXPECT_EQ(thin.chart_count, 1u);
+  EXPECT_LT(thin.stats.stretch_max, 1.01);  // unfolded, not squeezed; 1% bounds float rounding
+  EXPECT_EQ(thin.stats.overlapping_texels, 0u);
+  EXPECT_EQ(thin.stats.flipped_triangles, 0u);
+  const Atlas wide = wall_with_lip(0.3f);
+  EXPECT_EQ(wide.chart_count, 2u);
+}
+
 }  // namespace
 }  // namespace radbake
