@@ -4,7 +4,7 @@
 // (the input's camera, or the one the bake adds: inside the largest room, or in front of an
 // object). What is asserted is the exposure: few of the model's pixels
 // clip to white, and its median pixel is not near black. Screenshots go to --work (./dev
-// corpus-screenshots copies them into docs/corpus/).
+// corpus-screenshots makes them into docs/corpus/).
 // usage: node tests/corpus/three.test.mjs --corpus DIR --bakes DIR --work DIR
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';

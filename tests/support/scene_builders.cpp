@@ -187,4 +187,18 @@ std::string write_text_file(const std::string& name, const std::string& text) {
   return p.string();
 }
 
+AtlasOptions coarse_atlas() {
+  AtlasOptions atlas;
+  atlas.texel_density = 8;
+  return atlas;
+}
+
+BakeOptions under_a_uniform_sky(float luminance) {
+  BakeOptions options;
+  options.sky.enabled = true;
+  options.sky.distribution.model = SkyModel::Uniform;
+  options.sky.zenith_luminance = luminance;
+  return options;
+}
+
 }  // namespace radbake::test

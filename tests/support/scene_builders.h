@@ -44,6 +44,12 @@ Scene floor_with_lights_out_of_reach();
 
 Atlas unwrap(const Scene& scene, const AtlasOptions& options);
 
+// 8 texels a metre: rooms of a few metres bake in a blink, fine enough for readings in the air.
+AtlasOptions coarse_atlas();
+
+// A sky of the same luminance (cd/m2) everywhere above the horizon, alone.
+BakeOptions under_a_uniform_sky(float luminance);
+
 // A dense curved surface: a torus (major radius 1 m) with bumps, `rings` x `segments` quads
 // split into triangles. 250 x 200 gives 100,000 triangles.
 MeshInstance bumpy_torus(int rings, int segments);

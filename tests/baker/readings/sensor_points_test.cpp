@@ -10,21 +10,6 @@
 namespace radbake {
 namespace {
 
-AtlasOptions coarse() {
-  AtlasOptions atlas;
-  atlas.texel_density = 8;
-  return atlas;
-}
-
-// A sky of the same luminance (cd/m2) everywhere above the horizon, alone.
-BakeOptions under_a_uniform_sky(float luminance) {
-  BakeOptions options;
-  options.sky.enabled = true;
-  options.sky.distribution.model = SkyModel::Uniform;
-  options.sky.zenith_luminance = luminance;
-  return options;
-}
-
 TEST(Sensors, InTheOpenTheyReadTheSkyAndALampExactly) {
   Scene scene;
   const int grey = test::add_material(scene, {0.5f, 0.5f, 0.5f});
@@ -33,12 +18,12 @@ TEST(Sensors, InTheOpenTheyReadTheSkyAndALampExactly) {
   lamp.intensity = 500;
   lamp.position = {2, 3, 2};
   scene.lights.push_back(lamp);
-  BakeOptions options = under_a_uniform_sky(1000);
+  BakeOptions options = test::under_a_uniform_sky(1000);
   options.sky.ground_reflectance = 0;
   // Over the floor facing up, and beyond its edge facing back at it.
   const Vec3 up_at{2.5f, 1, 2}, side_at{6, 1, 2};
   options.sensors = {{up_at, {0, 1, 0}}, {side_at, {-1, 0, 0}}};
-  const BakeResult r = test::bake_scene(scene, coarse(), options).result;
+  const BakeResult r = test::bake_scene(scene, test::coarse_atlas(), options).result;
   ASSERT_EQ(r.sensor_lux.size(), 2u);
   // Up: pi L from the sky, I cos / d^2 from the lamp; the floor is below it. 1e-4 bounds float
   // rounding: the sky rays are unobstructed and the lamp's one ray is exact.
@@ -64,7 +49,7 @@ TEST(Sensors, AnEmittingSquareGivesPiLTimesTheFormFactorThroughTheGather) {
   BakeOptions options;
   options.sensor.rays = 65536;
   for (float x : {0.5f, 1.25f, 2.0f, 3.0f}) options.sensors.push_back({{x, 0.8f, 2}, {0, 1, 0}});
-  const BakeResult r = test::bake_scene(scene, coarse(), options).result;
+  const BakeResult r = test::bake_scene(scene, test::coarse_atlas(), options).result;
   double worst = 0;
   for (size_t k = 0; k < options.sensors.size(); ++k) {
     const double expected = M_PI * 1000 * test::point_to_polygon(options.sensors[k].position, {0, 1, 0}, corners);
@@ -83,7 +68,7 @@ TEST(Sensors, JustAboveAFloorTheyReadWhatTheFloorsTexelsReceive) {
   options.sensor.rays = 16384;
   const Vec3 at{0.6f, 0.001f, 1.3f};
   options.sensors = {{at, {0, 1, 0}}};
-  const BakeResult r = test::bake_scene(scene, coarse(), options).result;
+  const BakeResult r = test::bake_scene(scene, test::coarse_atlas(), options).result;
   const Rgb floor = test::mean_irradiance(r, [&](Vec3 p, Vec3 n) {
     return n.y > 0.9f && p.y < 0.01f && std::fabs(p.x - at.x) < 0.07f && std::fabs(p.z - at.z) < 0.07f;
   });
@@ -96,9 +81,9 @@ TEST(SurfaceStatistics, PerInstanceAreaMeanAndUniformity) {
   Scene scene;
   const int grey = test::add_material(scene, {0.5f, 0.5f, 0.5f});
   test::add_quad(scene, {0, 0, 2}, {2, 0, 0}, {0, 0, -2}, grey, "terrace");
-  BakeOptions options = under_a_uniform_sky(1000);
+  BakeOptions options = test::under_a_uniform_sky(1000);
   options.sky.rays = 16;
-  const BakeResult r = test::bake_scene(scene, coarse(), options).result;
+  const BakeResult r = test::bake_scene(scene, test::coarse_atlas(), options).result;
   ASSERT_EQ(r.report.surfaces.size(), 1u);
   const SurfaceStatistics& s = r.report.surfaces[0];
   EXPECT_EQ(s.name, "terrace");

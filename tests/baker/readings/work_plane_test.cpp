@@ -10,20 +10,6 @@
 namespace radbake {
 namespace {
 
-AtlasOptions coarse() {
-  AtlasOptions atlas;
-  atlas.texel_density = 8;
-  return atlas;
-}
-
-BakeOptions under_a_uniform_sky(float luminance) {
-  BakeOptions options;
-  options.sky.enabled = true;
-  options.sky.distribution.model = SkyModel::Uniform;
-  options.sky.zenith_luminance = luminance;
-  return options;
-}
-
 BakeOptions lamp_and_work_plane(Scene& scene, Vec3 lamp_at) {
   Light lamp;
   lamp.intensity = 100;
@@ -51,7 +37,7 @@ TEST(WorkPlane, AGridAtAHeightOverTheNamedFloorsOnly) {
   options.work_plane.over = {"floor"};
   options.work_plane.spacing = 0.5;
   options.work_plane.outdoors = true;  // quads in the open
-  const BakeResult r = test::bake_scene(scene, coarse(), options).result;
+  const BakeResult r = test::bake_scene(scene, test::coarse_atlas(), options).result;
   const WorkPlane& plane = r.work_plane;
   EXPECT_EQ(plane.columns, 6);
   EXPECT_EQ(plane.rows, 4);
@@ -63,7 +49,7 @@ TEST(WorkPlane, AGridAtAHeightOverTheNamedFloorsOnly) {
   // Without names: every surface facing up, the lowest under each point in the one storey (the
   // desk, the floor and the terrace are within a storey's height), the terrace's points too.
   options.work_plane.over.clear();
-  const BakeResult all = test::bake_scene(scene, coarse(), options).result;
+  const BakeResult all = test::bake_scene(scene, test::coarse_atlas(), options).result;
   size_t terrace = 0;
   for (const Sensor& s : all.sensors) terrace += s.position.x > 4.9f && std::fabs(s.position.y - 1.0f) < 1e-5f;
   EXPECT_EQ(terrace, 16u);  // 2 x 2 m at 0.5 m
@@ -79,12 +65,12 @@ TEST(WorkPlane, AtHeightZeroItIsNotShadedByTheFloorItLiesOn) {
   Scene scene;
   const int grey = test::add_material(scene, {0.5f, 0.5f, 0.5f});
   test::add_quad(scene, {0, 0, 2}, {2, 0, 0}, {0, 0, -2}, grey, "floor");
-  BakeOptions options = under_a_uniform_sky(1000);
+  BakeOptions options = test::under_a_uniform_sky(1000);
   options.sky.rays = 64;
   options.work_plane.enabled = true;
   options.work_plane.height = 0;
   options.work_plane.outdoors = true;
-  const BakeResult r = test::bake_scene(scene, coarse(), options).result;
+  const BakeResult r = test::bake_scene(scene, test::coarse_atlas(), options).result;
   ASSERT_EQ(r.sensors.size(), 16u);
   // pi L at every point: 1e-4 bounds float rounding; a ray stopped by the floor would take 1/64.
   for (double lux : r.sensor_lux) EXPECT_NEAR(lux, M_PI * 1000, 1e-4 * M_PI * 1000);
@@ -100,7 +86,7 @@ TEST(WorkPlane, CoversEnclosedFloorsOnlyUnlessAskedForOutdoors) {
   test::add_quad(scene, {-4, -0.01f, 8}, {12, 0, 0}, {0, 0, -12}, grey, "terrain");
   test::add_quad(scene, {5, 2.5f, 7}, {2, 0, 0}, {0, 0, -2}, grey, "canopy");  // facing up, open on every side
   BakeOptions options = lamp_and_work_plane(scene, {2, 2.5f, 2});
-  const BakeResult inside = test::bake_scene(scene, coarse(), options).result;
+  const BakeResult inside = test::bake_scene(scene, test::coarse_atlas(), options).result;
   const WorkPlane& plane = inside.work_plane;
   ASSERT_EQ(plane.storeys.size(), 1u);
   EXPECT_EQ(plane.sensors.size(), 64u);  // the room's 4 x 4 m at 0.5 m
@@ -116,7 +102,7 @@ TEST(WorkPlane, CoversEnclosedFloorsOnlyUnlessAskedForOutdoors) {
   // the roof at 3.2; the canopy at 2.5 is within a storey's height of the roof, so it falls in
   // the storey at 0, under whose points the terrain is lower).
   options.work_plane.outdoors = true;
-  const BakeResult all = test::bake_scene(scene, coarse(), options).result;
+  const BakeResult all = test::bake_scene(scene, test::coarse_atlas(), options).result;
   EXPECT_EQ(all.work_plane.outdoor_points, 0u);
   size_t points = 0;
   for (const WorkPlaneStorey& storey : all.work_plane.storeys)
@@ -135,7 +121,7 @@ TEST(WorkPlane, AGridPerStoreyAndARoomPerEnclosedRegion) {
   test::add_box(scene, {0, 3.2f, 0}, {6, 6, 4}, true, grey, "first floor");
   test::add_box(scene, {1, 3.9f, 1}, {2, 3.95f, 2}, false, grey, "desk top");  // not a storey (its legs left out)
   BakeOptions options = lamp_and_work_plane(scene, {1.5f, 2.5f, 2});
-  const BakeResult r = test::bake_scene(scene, coarse(), options).result;
+  const BakeResult r = test::bake_scene(scene, test::coarse_atlas(), options).result;
   const WorkPlane& plane = r.work_plane;
   ASSERT_EQ(plane.columns, 12);
   ASSERT_EQ(plane.rows, 8);
