@@ -24,7 +24,8 @@ std::string unwritable_image(const GltfSource& source, size_t i);
 // it named becomes the texture's source where it has none); textures' sources of images not written
 // removed, and the material references to textures left with no image. Returns, per image,
 // whether it is written; the writer removes the others (remove_objects) once it has copied the rest.
-// Data-URI PNGs are also made plain (below) there.
+// PNGs in data URIs are made plain (make_png_plain, below) here; the writer does those in files and
+// buffer views as it copies them.
 std::vector<uint8_t> repair_images(nlohmann::ordered_json& doc, const GltfSource& source, std::vector<std::string>& warnings);
 
 // Takes out of a PNG the chunks glTF viewers ignore and the validator flags as unsupported features
