@@ -16,34 +16,35 @@ constexpr int kMostBlendedLayers = 8;  // alpha-blended surfaces a display ray l
 constexpr float kClearance = 0.05f;    // of the room's length: the least distance from the eye to a surface
 constexpr int kBackingSteps = 8;       // positions tried between the room's near end and the wall behind
 
-// The share of a square grid of rays over the field of view, looking along `forward`, that
-// strikes a surface.
-float share_hit(const RayTracer& tracer, Vec3 eye, Vec3 forward, float yfov) {
+// What a square grid of kViewRays rays a side over the field of view, looking along `forward`
+// with +Y up, meets: each ray's hit, to `seen`.
+template <typename Seen>
+void view_grid(const RayTracer& tracer, Vec3 eye, Vec3 forward, float yfov, Seen&& seen) {
   const Vec3 right = normalize(cross(forward, {0, 1, 0})), up = cross(right, forward);
   const float half = std::tan(0.5f * yfov);
-  int hits = 0;
   for (int i = 0; i < kViewRays; ++i)
     for (int j = 0; j < kViewRays; ++j) {
       const float u = half * (2 * (float(i) + 0.5f) / kViewRays - 1), v = half * (2 * (float(j) + 0.5f) / kViewRays - 1);
-      hits += !tracer.intersect(eye, normalize(forward + right * u + up * v), 0, INFINITY).missed();
+      seen(tracer.intersect(eye, normalize(forward + right * u + up * v), 0, INFINITY));
     }
+}
+
+// The share of the view grid's rays that strike a surface.
+float share_hit(const RayTracer& tracer, Vec3 eye, Vec3 forward, float yfov) {
+  int hits = 0;
+  view_grid(tracer, eye, forward, yfov, [&](const Hit& hit) { hits += !hit.missed(); });
   return float(hits) / float(kViewRays * kViewRays);
 }
 
-// The nearest surface a grid of rays over the field of view, and rays straight up, down and to
-// either side, meet from `eye`.
+// The nearest surface the view grid, and rays straight up, down and to either side, meet from `eye`.
 float nearest_hit(const RayTracer& tracer, Vec3 eye, Vec3 forward, float yfov) {
-  const Vec3 right = normalize(cross(forward, {0, 1, 0})), up = cross(right, forward);
-  const float half = std::tan(0.5f * yfov);
   float nearest = INFINITY;
-  auto look = [&](Vec3 direction) {
-    const Hit hit = tracer.intersect(eye, normalize(direction), 0, INFINITY);
+  auto take = [&](const Hit& hit) {
     if (!hit.missed()) nearest = std::min(nearest, hit.distance);
   };
-  for (int i = 0; i < kViewRays; ++i)
-    for (int j = 0; j < kViewRays; ++j)
-      look(forward + right * (half * (2 * (float(i) + 0.5f) / kViewRays - 1)) + up * (half * (2 * (float(j) + 0.5f) / kViewRays - 1)));
-  for (Vec3 side : {right, -right, up, -up}) look(side);
+  view_grid(tracer, eye, forward, yfov, take);
+  const Vec3 right = normalize(cross(forward, {0, 1, 0})), up = cross(right, forward);
+  for (Vec3 side : {right, -right, up, -up}) take(tracer.intersect(eye, side, 0, INFINITY));
   return nearest;
 }
 
@@ -160,7 +161,9 @@ std::vector<std::vector<float>> display_view(const Scene& scene, const DisplayCa
       break;
     }
   const Vec3 right = cross(camera.forward, camera.up);
-  const float aspect = camera.aspect > 0 ? camera.aspect : 1.0f;
+  // An orthographic camera's view is xmag by ymag; a perspective one's, its aspect ratio or square.
+  const float aspect = camera.orthographic ? (camera.ymag > 0 ? camera.xmag / camera.ymag : 1.0f)
+                                           : (camera.aspect > 0 ? camera.aspect : 1.0f);
   const int rows = kDisplayViewRays, columns = std::max(1, int(std::lround(kDisplayViewRays * aspect)));
   const float half_height = camera.orthographic ? camera.ymag : std::tan(0.5f * camera.yfov);
   const float half_width = camera.orthographic ? camera.xmag : half_height * aspect;
