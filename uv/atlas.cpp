@@ -95,9 +95,12 @@ AtlasMesh lay_out_charts(const MeshView& mesh, const std::vector<const Chart*>& 
   out.page = page_index;
   out.triangles.assign(3 * mesh.triangle_count, 0);
   out.triangle_chart.assign(mesh.triangle_count, UINT32_MAX);
-  std::map<std::pair<uint32_t, uint32_t>, uint32_t> vertex_of;  // (input vertex, chart) -> output
+  // (input vertex, chart, its place there) -> output vertex. The place is part of the key, as one
+  // input vertex can lie twice in a chart: a face that could not join the mesh's connectivity
+  // (three faces on an edge) got copies of its corners and may be hinged onto the chart elsewhere.
+  std::map<std::tuple<uint32_t, uint32_t, float, float>, uint32_t> vertex_of;
   auto emit = [&](uint32_t source, uint32_t chart, Vec2 uv) {
-    auto [it, inserted] = vertex_of.emplace(std::make_pair(source, chart), uint32_t(out.source_vertex.size()));
+    auto [it, inserted] = vertex_of.emplace(std::make_tuple(source, chart, uv.x, uv.y), uint32_t(out.source_vertex.size()));
     if (inserted) {
       out.source_vertex.push_back(source);
       out.uvs.push_back(uv);

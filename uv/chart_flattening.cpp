@@ -4,6 +4,7 @@
 #include <cmath>
 #include <functional>
 #include <map>
+#include <set>
 #include <tuple>
 #include <unordered_map>
 
@@ -327,18 +328,6 @@ Chart make_chart(const HalfEdgeMesh& hm, const LocalChart& c, uint32_t mesh_inde
   return chart;
 }
 
-// Flattens `faces` (one connected piece): a plane by projection; a curved disc by a conformal map.
-// False when the piece is a curved ring, or its map folds or overlaps itself.
-bool map_chart(const HalfEdgeMesh& hm, const FaceList& faces, LocalChart& c) {
-  static const float cos_planar = std::cos(0.5f * 3.14159265f / 180.0f);
-  c = gather(hm, faces);
-  bool planar = std::all_of(faces.begin(), faces.end(), [&](int f) { return dot(hm.face_normal[size_t(f)], c.normal) >= cos_planar; });
-  // A curved chart must be a disc: a ring (the top of a torus, a band round a cylinder) flattens
-  // into an annulus, and rings are what fold.
-  if (planar) return project(c), maps_cleanly(hm, c);
-  return boundary_loops(hm, faces) <= 1 && conformal_map(hm, c) && maps_cleanly(hm, c);
-}
-
 // Sander et al.'s L2 stretch of a mapped chart, scaled to its area as make_chart scales it: the
 // whole chart's (area-weighted) and its worst face's.
 Vec2 chart_stretch(const HalfEdgeMesh& hm, const LocalChart& c) {
@@ -360,21 +349,45 @@ Vec2 chart_stretch(const HalfEdgeMesh& hm, const LocalChart& c) {
   return {float(std::sqrt(sum / area_3d) * normaliser), float(worst * normaliser)};
 }
 
-// Piece `s` laid beside chart `n`, unfolded about their shared edge (a, b) (OpenMesh vertices):
-// its own flattening moved, turned and scaled so that a and b land on n's a and b. Faces keep their
-// orientation, so the piece falls on the far side of the edge. False when a vertex both share lands
-// elsewhere in n (the piece wraps round) or the union does not map cleanly.
-bool hinge(const HalfEdgeMesh& hm, const LocalChart& n, const LocalChart& s, int a, int b, LocalChart& out) {
-  const Vec2 na = n.uv[size_t(n.local.at(a))], nb = n.uv[size_t(n.local.at(b))];
-  const Vec2 sa = s.uv[size_t(s.local.at(a))], sb = s.uv[size_t(s.local.at(b))];
-  const Vec2 from = sb - sa, to = nb - na;
+// A conformal map may squash a face it cannot lay flat well (a sliver at a sharp corner of a
+// curved chart) to a line; a chart whose worst face stretches more than this is split instead.
+constexpr float kMostFaceStretch = 4;
+
+// Flattens `faces` (one connected piece): a plane by projection; a curved disc by a conformal map.
+// False when the piece is a curved ring, or its map folds, overlaps itself or squashes a face.
+bool map_chart(const HalfEdgeMesh& hm, const FaceList& faces, LocalChart& c) {
+  static const float cos_planar = std::cos(0.5f * 3.14159265f / 180.0f);
+  c = gather(hm, faces);
+  bool planar = std::all_of(faces.begin(), faces.end(), [&](int f) { return dot(hm.face_normal[size_t(f)], c.normal) >= cos_planar; });
+  // A curved chart must be a disc: a ring (the top of a torus, a band round a cylinder) flattens
+  // into an annulus, and rings are what fold.
+  if (planar) return project(c), maps_cleanly(hm, c);
+  return boundary_loops(hm, faces) <= 1 && conformal_map(hm, c) && maps_cleanly(hm, c) &&
+         chart_stretch(hm, c).y <= kMostFaceStretch;
+}
+
+// Where piece `s` touches chart `n`: the two ends of the longest stretch of edge they share, as
+// each one's UVs put them, and whether the surface folds there.
+struct Contact {
+  float length = 0;  // metres of edge shared in all, over every stretch
+  float longest = 0;
+  Vec2 n_from, n_to, s_from, s_to;
+  bool folds = true;  // across the longest stretch
+};
+
+// Piece `s` laid beside chart `n`, unfolded about where they touch: its own flattening moved,
+// turned and scaled so that its ends of the contact land on n's. Faces keep their orientation, so
+// the piece falls on the far side of the edge. False when a vertex both share lands elsewhere in n
+// (the piece wraps round) or the union does not map cleanly.
+bool hinge(const HalfEdgeMesh& hm, const LocalChart& n, const LocalChart& s, const Contact& at, LocalChart& out) {
+  const Vec2 from = at.s_to - at.s_from, to = at.n_to - at.n_from;
   const float length2 = from.x * from.x + from.y * from.y;
   if (!(length2 > 0)) return false;
-  // z -> na + (z - sa) * to / from, in complex numbers.
+  // z -> n_from + (z - s_from) * to / from, in complex numbers.
   const Vec2 k{(to.x * from.x + to.y * from.y) / length2, (to.y * from.x - to.x * from.y) / length2};
   auto place = [&](Vec2 z) {
-    const Vec2 d = z - sa;
-    return Vec2{na.x + d.x * k.x - d.y * k.y, na.y + d.x * k.y + d.y * k.x};
+    const Vec2 d = z - at.s_from;
+    return Vec2{at.n_from.x + d.x * k.x - d.y * k.y, at.n_from.y + d.x * k.y + d.y * k.x};
   };
   out = n;
   const float tolerance = 1e-4f * std::sqrt(to.x * to.x + to.y * to.y);
@@ -393,22 +406,95 @@ bool hinge(const HalfEdgeMesh& hm, const LocalChart& n, const LocalChart& s, int
   return maps_cleanly(hm, out);
 }
 
+// The mesh's open edges (an edge with a face on one side only), found by where they pass, so a
+// piece can find the charts it touches without sharing vertices with them: a floor split by a
+// T-junction, the faces of a level's brushes, a wall meeting a slab.
+class OpenEdges {
+ public:
+  struct Edge {
+    int face, from_vertex, to_vertex;
+    Vec3 from, to;
+  };
+  explicit OpenEdges(const HalfEdgeMesh& hm) {
+    double total = 0;
+    for (auto h : hm.mesh.halfedges())
+      if (!h.is_boundary() && h.opp().is_boundary()) {
+        edges_.push_back({h.face().idx(), h.from().idx(), h.to().idx(), to_vec3(hm.mesh.point(h.from())), to_vec3(hm.mesh.point(h.to()))});
+        total += double(length(edges_.back().to - edges_.back().from));
+      }
+    if (edges_.empty()) return;
+    cell_ = float(2 * total / double(edges_.size()));
+    for (size_t e = 0; e < edges_.size(); ++e) {
+      const Vec3 d = edges_[e].to - edges_[e].from;
+      // Every cell the edge passes is marked: steps of half a cell, and a long edge's at most 4096.
+      const int steps = std::min(4096, 1 + int(2 * length(d) / cell_));
+      int64_t last = INT64_MIN;
+      for (int i = 0; i <= steps; ++i) {
+        const int64_t key = cell_key(edges_[e].from + d * (float(i) / float(steps)));
+        if (key != last) by_cell_[key].push_back(uint32_t(e)), last = key;
+      }
+    }
+  }
+  // Open edges passing the cell where `p` lies: candidates to test, each perhaps more than once.
+  template <class Visit>
+  void near(Vec3 p, Visit visit) const {
+    if (edges_.empty()) return;
+    auto it = by_cell_.find(cell_key(p));
+    if (it != by_cell_.end())
+      for (uint32_t e : it->second) visit(edges_[e]);
+  }
+
+ private:
+  int64_t cell_key(Vec3 p) const {
+    auto c = [&](float v) { return int64_t(std::floor(v / cell_)) & 0x1fffff; };
+    return c(p.x) << 42 | c(p.y) << 21 | c(p.z);
+  }
+  std::vector<Edge> edges_;
+  float cell_ = 1;
+  std::unordered_map<int64_t, std::vector<uint32_t>> by_cell_;
+};
+
+// Where edge a (of one face) and edge b (of another) lie along one line, run opposite ways (as two
+// faces side by side do) and overlap: the overlap's ends as parameters along each.
+bool touch(Vec3 a0, Vec3 a1, Vec3 b0, Vec3 b1, float ta[2], float tb[2]) {
+  const Vec3 da = a1 - a0, db = b1 - b0;
+  const float la2 = dot(da, da), lb2 = dot(db, db);
+  if (!(la2 > 0) || !(lb2 > 0)) return false;
+  const float la = std::sqrt(la2), lb = std::sqrt(lb2);
+  if (dot(da, db) > -0.9999f * la * lb) return false;
+  const float tolerance = 1e-4f * std::max(la, lb);
+  if (length(cross(a0 - b0, db)) > tolerance * lb || length(cross(a1 - b0, db)) > tolerance * lb) return false;
+  const float t0 = dot(a0 - b0, db) / lb2, t1 = dot(a1 - b0, db) / lb2;  // a's ends along b; t0 > t1
+  tb[0] = std::max(0.0f, t1), tb[1] = std::min(1.0f, t0);
+  if ((tb[1] - tb[0]) * lb <= tolerance) return false;
+  for (int i = 0; i < 2; ++i) ta[i] = dot(b0 + db * tb[i] - a0, da) / la2;
+  return true;
+}
+
+Vec2 along(const LocalChart& c, int from, int to, float t) {
+  const Vec2 a = c.uv[size_t(c.local.at(from))], b = c.uv[size_t(c.local.at(to))];
+  return a + (b - a) * t;
+}
+
 enum class Sliver { None, Resolved, BelowATexel };
 
 // Slivers and specks (thinner than options.sliver_width, or smaller than small_chart_area) cost
-// more in padding than they hold: each joins the neighbour it shares the longest unfolded edge
-// with (an edge folding less than the hard-edge angle), if the two flatten together cleanly
-// and stretch no more than they do apart (L2 within 0.1%, the worst face within 1%): a chamfer
-// hinged onto its face, a strip of a thin rod onto the next strip. Pieces thinner than a texel
-// (options.texel_size: a window frame's profile, a chair's rail at a house's density) are hinged
-// onto the neighbour across any edge, as they are: every one on its own took a texel and its
-// padding (the FZK-Haus: 2,750 charts under a texel of area, 70% of its charts).
+// more in padding than they hold. Each joins the chart it shares the most edge with: first one
+// where the surface does not fold (less than the hard-edge angle), if the two flatten together
+// cleanly and stretch no more than they do apart (L2 within 0.1%, the worst face within 1%): a
+// chamfer onto its face, a strip of a thin rod onto the next strip; else, unfolded as it is onto
+// a neighbour across any edge (the side of a thin box onto its top, a window frame's profile onto
+// its face), if the union maps cleanly. A piece can also join a chart it touches without sharing
+// vertices (a T-junction, the brushes of a game level): it is hinged there alike. On its own,
+// every such piece took its texels and a ring of padding (the FZK-Haus: 2,750 charts under a
+// texel of area, 70% of its charts).
 void merge_slivers(const HalfEdgeMesh& hm, const ChartOptions& options, std::vector<LocalChart>& charts,
                    UnwrapProgress& progress) {
   const float cos_fold = std::cos(options.hard_edge_degrees * 3.14159265f / 180.0f);
   std::unordered_map<int, size_t> chart_of;  // face -> index into charts
   for (size_t i = 0; i < charts.size(); ++i)
     for (int f : charts[i].faces) chart_of[f] = i;
+  const OpenEdges open_edges(hm);
   // Sizes in metres: a conformal map keeps angles, not scale, so its UVs are scaled by the ratio
   // of areas, as make_chart scales them.
   auto sliver_kind = [&](const LocalChart& c) {
@@ -432,42 +518,62 @@ void merge_slivers(const HalfEdgeMesh& hm, const ChartOptions& options, std::vec
     const size_t s = order[k];
     const Sliver kind = gone[s] ? Sliver::None : sliver_kind(charts[s]);
     if (kind == Sliver::None) continue;
-    std::map<size_t, float> shared;
-    std::map<size_t, std::tuple<float, int, int>> longest_edge;  // per neighbour: length, its two vertices
+    std::map<size_t, Contact> contacts;
+    auto add_contact = [&](int f, int g, float length, Vec2 n_from, Vec2 n_to, Vec2 s_from, Vec2 s_to) {
+      auto it = chart_of.find(g);
+      if (it == chart_of.end() || it->second == s) return;
+      Contact& c = contacts[it->second];
+      c.length += length;
+      if (length > c.longest)
+        c = {c.length, length, n_from, n_to, s_from, s_to, dot(hm.face_normal[size_t(f)], hm.face_normal[size_t(g)]) < cos_fold};
+    };
     for (int f : charts[s].faces)
       for (auto h : hm.mesh.fh_range(HalfEdgeTriMesh::FaceHandle(f))) {
-        auto o = h.opp();
-        if (o.is_boundary()) continue;
-        const int g = o.face().idx();
-        auto it = chart_of.find(g);
-        const bool folds = dot(hm.face_normal[size_t(f)], hm.face_normal[size_t(g)]) < cos_fold;
-        if (it == chart_of.end() || it->second == s || (kind == Sliver::Resolved && folds)) continue;
-        const float length = hm.mesh.calc_edge_length(h);
-        shared[it->second] += length;
-        auto& edge = longest_edge[it->second];
-        if (length > std::get<0>(edge)) edge = {length, h.from().idx(), h.to().idx()};
+        const int a = h.from().idx(), b = h.to().idx();
+        if (!h.opp().is_boundary()) {
+          auto n = chart_of.find(h.opp().face().idx());
+          if (n == chart_of.end() || n->second == s) continue;
+          add_contact(f, h.opp().face().idx(), hm.mesh.calc_edge_length(h), along(charts[n->second], a, b, 0),
+                      along(charts[n->second], a, b, 1), along(charts[s], a, b, 0), along(charts[s], a, b, 1));
+          continue;
+        }
+        const Vec3 a0 = to_vec3(hm.mesh.point(h.from())), a1 = to_vec3(hm.mesh.point(h.to()));
+        std::set<std::pair<int, int>> seen;
+        open_edges.near((a0 + a1) * 0.5f, [&](const OpenEdges::Edge& e) {
+          float ta[2], tb[2];
+          auto n = chart_of.find(e.face);
+          if (n == chart_of.end() || n->second == s || !touch(a0, a1, e.from, e.to, ta, tb)) return;
+          if (!seen.insert({e.from_vertex, e.to_vertex}).second) return;
+          const LocalChart& c = charts[n->second];
+          add_contact(f, e.face, (tb[1] - tb[0]) * length(e.to - e.from), along(c, e.from_vertex, e.to_vertex, tb[0]),
+                      along(c, e.from_vertex, e.to_vertex, tb[1]), along(charts[s], a, b, ta[0]), along(charts[s], a, b, ta[1]));
+        });
       }
     std::vector<std::pair<float, size_t>> neighbours;
-    for (auto [n, length] : shared) neighbours.push_back({-length, n});
+    for (const auto& [n, contact] : contacts) neighbours.push_back({-contact.length, n});
     std::sort(neighbours.begin(), neighbours.end());
     const Vec2 own = chart_stretch(hm, charts[s]);
-    for (auto [unused, n] : neighbours) {
-      LocalChart merged;
-      if (kind == Sliver::BelowATexel) {
-        // Finer than a texel: unfolded onto the neighbour across any edge, fold or not; a texel
-        // cannot show its light apart from its neighbour's anyway.
-        if (!hinge(hm, charts[n], charts[s], std::get<1>(longest_edge[n]), std::get<2>(longest_edge[n]), merged)) continue;
-      } else {
-        FaceList faces = charts[n].faces;
-        faces.insert(faces.end(), charts[s].faces.begin(), charts[s].faces.end());
-        if (!map_chart(hm, faces, merged)) continue;
+    // Unfolded onto a neighbour as it is, when it is finer than a texel (a texel cannot show its
+    // light apart from its neighbour's anyway) or no flat neighbour takes it.
+    for (bool as_it_is : {kind == Sliver::BelowATexel, true}) {
+      for (auto [unused, n] : neighbours) {
+        LocalChart merged;
+        if (as_it_is) {
+          if ((kind == Sliver::Resolved && contacts[n].folds) || !hinge(hm, charts[n], charts[s], contacts[n], merged)) continue;
+        } else {
+          if (contacts[n].folds) continue;
+          FaceList faces = charts[n].faces;
+          faces.insert(faces.end(), charts[s].faces.begin(), charts[s].faces.end());
+          if (!map_chart(hm, faces, merged)) continue;
+        }
         const Vec2 theirs = chart_stretch(hm, charts[n]), both = chart_stretch(hm, merged);
         if (both.x > std::max(own.x, theirs.x) * 1.001f || both.y > std::max(own.y, theirs.y) * 1.01f) continue;
+        for (int f : charts[s].faces) chart_of[f] = n;
+        charts[n] = std::move(merged);
+        gone[s] = true;
+        break;
       }
-      for (int f : charts[s].faces) chart_of[f] = n;
-      charts[n] = std::move(merged);
-      gone[s] = true;
-      break;
+      if (gone[s]) break;
     }
   }
   std::vector<LocalChart> left;

@@ -110,5 +110,43 @@ TEST(ChartPacking, APieceThinnerThanATexelHingesOntoItsNeighbourAcrossAFold) {
   EXPECT_EQ(wide.chart_count, 2u);
 }
 
+// A floor 2 m square and, beside its far edge, a strip 1 m long and 20 cm wide: two texels at
+// 10 texels/m, less than its padding is worth. The strip shares no vertex with the floor: it meets
+// the floor's edge in the middle (a T-junction, as a level's brushes and a building's slabs meet).
+// Touching, it joins the floor's chart, side by side as in the room; 1 cm apart, it does not
+// touch and keeps its own chart.
+Atlas floor_and_strip(float gap) {
+  Scene scene;
+  const int m = test::add_material(scene, {0.5f, 0.5f, 0.5f});
+  const float y = 2 + gap;
+  test::add_mesh(scene, {{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}, {0.5f, y, 0}, {1.5f, y, 0}, {1.5f, y + 0.2f, 0}, {0.5f, y + 0.2f, 0}},
+                 {0, 1, 2, 0, 2, 3, 4, 5, 6, 4, 6, 7}, m, "floor");
+  AtlasOptions options;
+  options.texel_density = 10;
+  return test::unwrap(scene, options);
+}
+
+TEST(ChartPacking, APieceTouchingAChartWithoutSharingVerticesJoinsIt) {
+  const Atlas touching = floor_and_strip(0);
+  EXPECT_EQ(touching.chart_count, 1u);
+  EXPECT_LT(touching.stats.stretch_max, 1.01);  // laid as it lies, not squeezed; 1% bounds float rounding
+  EXPECT_EQ(touching.stats.overlapping_texels, 0u);
+  EXPECT_EQ(touching.stats.flipped_triangles, 0u);
+  // Where the strip's edge meets the floor's, their texels are one: the strip's corner (0.5, 2)
+  // lies on the floor's edge from (0, 2) to (2, 2) in the page too, a quarter of the way along.
+  const AtlasMesh& mesh = touching.meshes[0];
+  auto page_uv = [&](uint32_t input_vertex) {
+    for (size_t v = 0; v < mesh.source_vertex.size(); ++v)
+      if (mesh.source_vertex[v] == input_vertex) return mesh.uvs[v];
+    return Vec2{-1, -1};
+  };
+  const Vec2 from = page_uv(3), to = page_uv(2), corner = page_uv(4);
+  const Vec2 expected = from + (to - from) * 0.25f;
+  const float texel = 1.0f / float(touching.pages[0].width);
+  EXPECT_NEAR(corner.x, expected.x, 0.01f * texel);  // a hundredth of a texel: float rounding
+  EXPECT_NEAR(corner.y, expected.y, 0.01f * texel);
+  EXPECT_EQ(floor_and_strip(0.01f).chart_count, 2u);
+}
+
 }  // namespace
 }  // namespace radbake
