@@ -50,6 +50,10 @@ inline Vec3 normalize(Vec3 a) {
 }
 inline float max_component(Vec3 a) { return std::max(a.x, std::max(a.y, a.z)); }
 inline float sum(Vec3 a) { return a.x + a.y + a.z; }
+// What a light meter reads of linear RGB light: the CIE 1931 Y (photopic) weights of its
+// primaries, sRGB's (ITU-R BT.709, D65 white; IEC 61966-2-1), so white (1, 1, 1) weighs 1. Lux,
+// cd/m2 and daylight factors are this; the lightmap pages and the energy balance stay RGB.
+inline double photopic(Rgb c) { return 0.2126 * double(c.x) + 0.7152 * double(c.y) + 0.0722 * double(c.z); }
 inline bool is_finite(Vec3 a) {
   return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z);
 }

@@ -146,15 +146,24 @@ OptionGroup<B> bake_group() {
   patch_size.echo = [](const B& b) {
     return b.bake.patches.block_size > 0 ? echo_number(b.bake.patches.block_size) : std::string("auto");
   };
-  Option<B> glazing = number<B>("--glazing-transmittance", "X", 0, 1, "", FIELD(bake.glazing_transmittance),
+  Option<B> glazing = number<B>("--glazing-transmittance", "X", 0, 1, "", FIELD(bake.glazing.transmittance),
                                 "visible transmittance of glazing along its normal (KHR_materials_transmission, read as "
                                 "a thin pane: the factor is the share of light meeting the glazing; obliquely it passes "
                                 "less, as a clear pane of the material's KHR_materials_ior), for materials without "
                                 "extras.visible_transmittance of their own");
   glazing.echo = [](const B& b) {
-    return b.bake.glazing_transmittance >= 0 ? echo_number(b.bake.glazing_transmittance) : std::string("clear pane");
+    return b.bake.glazing.transmittance >= 0 ? echo_number(b.bake.glazing.transmittance) : std::string("clear pane");
   };
   glazing.default_note = "0.92 for glass; double glazing is about 0.8, solar control 0.4-0.7";
+  Option<B> glazing_model = choice<B>(
+      "--glazing-model", "NAME",
+      std::vector<std::pair<std::string, GlazingModel>>{{"fresnel-absorbing", GlazingModel::FresnelAbsorbing},
+                                                         {"fresnel", GlazingModel::Fresnel},
+                                                         {"cie171", GlazingModel::Cie171}},
+      FIELD(bake.glazing.model),
+      "how glazing passes less light obliquely: fresnel-absorbing (Fresnel faces and absorption in the glass, as "
+      "Radiance's glass: a pane of low transmittance falls faster), fresnel (the faces alone, scaled), cie171 (CIE "
+      "171's 6 mm clear glass, scaled); docs/daylight.md");
   Option<B> emission = number<B>("--emission-scale", "X", 1e-6, 1e9, "", FIELD(bake.emission_scale),
                                  "multiply glTF emission before reading it as cd/m2; 683 for Blender's exporter, which "
                                  "converts lamps to candela but not emission");
@@ -214,7 +223,7 @@ OptionGroup<B> bake_group() {
                  "where those disagree"),
        number<B>("--light-rays", "N", 1, 1 << 16, "rays", FIELD(bake.direct.punctual_rays),
                  "shadow rays per texel per punctual light"),
-       patch_size, emission, glazing,
+       patch_size, emission, glazing, glazing_model,
        flag<B>("--no-ambient", false, FIELD(bake.solve.ambient_term), "leave out the ambient estimate of the light still unshot"),
        flag<B>("--direct-only", true, FIELD(bake.plan.direct_only), "direct light only: no light between surfaces"),
        flag<B>("--simulate-everything", true, FIELD(bake.plan.simulate_everything),
@@ -572,9 +581,14 @@ OptionGroup<B> analysis_group() {
                    "plaza); by default a point needs something above it and walls round it"),
            text<B>("--sensors", "FILE.csv", FIELD(sensor_file),
                    "points to measure at too: a line each, x,y,z or x,y,z,nx,ny,nz (metres; the meter faces +Y, up, "
-                   "unless given); a header line and # comments are skipped"),
-           number<B>("--sensor-rays", "N", 1, 1 << 24, "rays", FIELD(bake.sensor.rays),
-                     "rays per sensor for the light surfaces send"),
+                   "unless given); # comments, blank lines and one header line before the first point are skipped"),
+           number<B>("--sensor-rays", "N", 8, 1 << 24, "rays", FIELD(bake.sensor.rays),
+                     "rays per sensor (and work-plane point) for the light surfaces send, in 8 batches whose spread "
+                     "gives each reading's standard error"),
+           number<B>("--sensor-sky-rays", "N", 8, 1 << 24, "rays", FIELD(bake.sensor.sky_rays),
+                     "rays per sensor (and work-plane point) for the sky and the ground, apart from the texels' "
+                     "--sky-rays, in 8 batches likewise; with --method pathtrace, whole paths per sensor (the "
+                     "reference)"),
            flag<B>("--daylight-factor", true, FIELD(daylight_factor),
                    "under an overcast sky without a sun (cie-overcast, uniform, cie-1 .. cie-6): each sensor's and "
                    "texel's illuminance over the unobstructed sky's horizontal illuminance, in percent: a column of "

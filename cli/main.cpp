@@ -81,7 +81,7 @@ radbake::DisplaySummary write_display(const radbake::BakeCommand& cmd, const rad
   const bool sh = cmd.bake.directional == Directional::SphericalHarmonics;
   const DisplayLight light = display_light(scene, atlas, result.pages, result.vertex_values,
                                            sh ? &result.directional : nullptr, cmd.bake.emission_scale, irradiance,
-                                           cmd.bake.glazing_transmittance, &result.display_view, cmd.display);
+                                           cmd.bake.glazing, &result.display_view, cmd.display);
   DisplaySummary summary;
   summary.exposure = light.exposure;
   if (cmd.display.mode == DisplayMode::None) return summary;
@@ -117,6 +117,7 @@ void print_readings(const char* what, const radbake::ReadingSummary& lux, const 
                lux.count, lux.min, lux.mean, lux.max, lux.uniformity);
   if (percent.count > 0)
     std::fprintf(stderr, "; daylight factor min %.3g%%, mean %.3g%%, max %.3g%%", percent.min, percent.mean, percent.max);
+  if (lux.noise > 0) std::fprintf(stderr, "; noise %.2g%% (RMS standard error per point)", 100 * lux.noise);
   std::fprintf(stderr, "\n");
 }
 

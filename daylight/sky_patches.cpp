@@ -54,6 +54,42 @@ void SkyPatches::centre(size_t k, double* altitude, double* azimuth) const {
   *altitude = 0.5 * (a0 + a1), *azimuth = 0.5 * (z0 + z1);
 }
 
+std::vector<std::pair<size_t, double>> SkyPatches::interpolation(double altitude, double azimuth) const {
+  const int rows = 7 * m_;
+  // Row r's centres lie at altitude (r + 0.5) h; the cap's at the zenith.
+  const double position = std::clamp(altitude, 0.0, M_PI / 2) / row_height_ - 0.5;
+  const int below = int(std::floor(position));
+  std::vector<std::pair<size_t, double>> out;
+  auto in_row = [&](int r, double weight) {
+    if (weight <= 0) return;
+    if (r >= rows) {
+      out.push_back({first_of_row_.back(), weight});
+      return;
+    }
+    const int n = count_of_row_[size_t(r)];
+    double at = azimuth / (2 * M_PI) * n - 0.5;  // in patch widths from patch 0's centre
+    at -= std::floor(at / n) * n;
+    const int left = int(std::floor(at)) % n, right = (left + 1) % n;
+    const double t = at - std::floor(at);
+    out.push_back({first_of_row_[size_t(r)] + size_t(left), weight * (1 - t)});
+    out.push_back({first_of_row_[size_t(r)] + size_t(right), weight * t});
+  };
+  if (below < 0) {
+    in_row(0, 1);
+  } else if (below >= rows - 1) {
+    // Between the top row's centres and the zenith, which the cap's centre is.
+    const double top = (double(rows) - 0.5) * row_height_;
+    const double t = std::clamp((altitude - top) / (M_PI / 2 - top), 0.0, 1.0);
+    in_row(rows - 1, 1 - t);
+    in_row(rows, t);
+  } else {
+    const double t = position - below;
+    in_row(below, 1 - t);
+    in_row(below + 1, t);
+  }
+  return out;
+}
+
 double SkyPatches::solid_angle(size_t k) const {
   double a0, a1, z0, z1;
   bounds(k, &a0, &a1, &z0, &z1);

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace radbake {
@@ -23,6 +24,11 @@ class SkyPatches {
   // Centre of patch k: altitude and azimuth, radians (the cap's centre is the zenith).
   void centre(size_t k, double* altitude, double* azimuth) const;
   double solid_angle(size_t k) const;  // steradians; all of them add up to 2 pi
+  // Up to four patches and weights (adding up to 1) that interpolate a quantity known at the
+  // patches' centres to a direction: linearly in azimuth between the two centres of a row on
+  // either side of it, and in altitude between the two rows whose centres' altitudes bracket it
+  // (below the lowest row's centres, that row alone; above the highest's, toward the cap's).
+  std::vector<std::pair<size_t, double>> interpolation(double altitude, double azimuth) const;
   // Patch k's altitudes [low, high] and azimuths [west edge, east edge] (the cap: all azimuths).
   void bounds(size_t k, double* altitude_low, double* altitude_high, double* azimuth_low, double* azimuth_high) const;
 

@@ -93,14 +93,33 @@ std::vector<Rgb> sky_irradiance(const Elements& e, const Surface& surface, const
   return irradiance;
 }
 
-std::vector<double> sky_illuminance_at(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
-                                       const RayTracer& tracer, const SkyLight& sky, uint64_t seed) {
-  std::vector<double> lux(points.size());
-  const SkyRays rays(sky, tracer);
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size(), 16), [&](const tbb::blocked_range<size_t>& r) {
+std::vector<SensorBatches> sky_illuminance_at(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
+                                              const RayTracer& tracer, const SkyLight& sky, uint32_t rays, uint64_t seed) {
+  std::vector<SensorBatches> lux(points.size());
+  const SkyView view(sky);
+  const uint32_t per_batch = rays_per_batch(rays), sun_rays = std::max<uint32_t>(1, sky.sun_rays);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size(), 4), [&](const tbb::blocked_range<size_t>& r) {
     for (size_t i = r.begin(); i < r.end(); ++i) {
       Rng rng(seed, Stream::SensorSky, i);
-      lux[i] = rays.lux(normals[i], normals[i], [&](Vec2) { return points[i]; }, rng);
+      const SensorRayPatterns pattern(rng);
+      const Vec3 n = normals[i];
+      double sun = 0;  // lux: cos(incidence) over the disc's points that are not hidden
+      if (view.sun_up()) {
+        for (uint32_t k = 0; k < sun_rays; ++k) {
+          const Vec3 d = view.toward_sun(cmj_sample(k, sun_rays, pattern.sky.sun_disc));
+          if (dot(n, d) > 0) sun += dot(n, d) * tracer.transmittance(points[i], d, 0.0f, INFINITY);
+        }
+        sun *= sky.sun_illuminance / sun_rays;
+      }
+      for (uint32_t b = 0; b < kSensorBatches; ++b) {
+        double luminance = 0;  // cd/m2, summed over the batch's cosine-distributed rays
+        for (uint32_t k = 0; k < per_batch; ++k) {
+          const Vec3 d = hemisphere_direction(n, n, cmj_sample(k, per_batch, pattern.batch[b]));
+          const float passes = tracer.transmittance(points[i], d, 0.0f, INFINITY);
+          if (passes > 0) luminance += passes * view.luminance(d);
+        }
+        lux[i][b] = M_PI * luminance / per_batch + sun;
+      }
     }
   });
   return lux;

@@ -9,6 +9,8 @@
 // the sun are (SkyLight, SkyView) is daylight/sky.h's; this file casts the rays.
 #pragma once
 
+#include <algorithm>
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -32,6 +34,24 @@ struct SkyRayPatterns {
       : origin(rng.next_u32()), direction(rng.next_u32()), sun_origin(rng.next_u32()), sun_disc(rng.next_u32()) {}
 };
 
+// A sensor's rays (its sky rays, and its rays to the surfaces) come in kSensorBatches independent
+// stratified sets: its reading is the mean of its batches' and their spread states its noise, the
+// standard error of that mean. A texel's rays are one set.
+constexpr uint32_t kSensorBatches = 8;
+inline uint32_t rays_per_batch(uint32_t rays) { return std::max<uint32_t>(1, rays / kSensorBatches); }
+
+// Sensor `index`'s patterns, drawn from its generator: the sun's as a texel draws them
+// (SkyRayPatterns), then one per batch. Ray k of batch b of n per batch goes along
+// hemisphere_direction(normal, normal, cmj_sample(k, n, batch[b])); daylight coefficients cast the
+// very same rays.
+struct SensorRayPatterns {
+  SkyRayPatterns sky;
+  uint32_t batch[kSensorBatches];
+  explicit SensorRayPatterns(Rng& rng) : sky(rng) {
+    for (uint32_t& b : batch) b = rng.next_u32();
+  }
+};
+
 // Rays start a millionth of the scene off a sensor, so a sensor lying on a surface (a work plane
 // at height 0) does not see the surface it lies on.
 inline Vec3 sensor_origin(Vec3 position, Vec3 normal, float scene_extent) { return position + normal * (1e-6f * scene_extent); }
@@ -40,9 +60,12 @@ inline Vec3 sensor_origin(Vec3 position, Vec3 normal, float scene_extent) { retu
 // `pattern`, each counting what of it passes (glazing); 0 when the sun is down or absent.
 double sun_disc_seen(const SkyView& view, const RayTracer& tracer, Vec3 origin, uint32_t rays, uint32_t pattern);
 
-// At points in the air (sensors) facing `normals`, lux; each point's rays all start at it.
-std::vector<double> sky_illuminance_at(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
-                                       const RayTracer& tracer, const SkyLight& sky, uint64_t seed);
+// At points in the air (sensors) facing `normals`, lux from the sky, the ground and the sun, per
+// batch of `rays` sky rays (SensorRayPatterns; the sun's share, from all of sky.sun_rays, in every
+// batch alike); each point's rays all start at it.
+using SensorBatches = std::array<double, kSensorBatches>;
+std::vector<SensorBatches> sky_illuminance_at(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
+                                              const RayTracer& tracer, const SkyLight& sky, uint32_t rays, uint64_t seed);
 
 // Per element of `range` (the first at index 0), lux (grey: the sky is white); with `directions`,
 // where it comes from (light_direction.h).

@@ -27,14 +27,14 @@ std::vector<std::vector<float>> at_prelit_detail(const std::vector<std::vector<f
 DisplayLight display_light(const Scene& scene, const Atlas& atlas, const std::vector<LightmapPage>& pages,
                            const std::vector<std::vector<Rgb>>& vertex_values,
                            const std::vector<std::vector<LightmapPage>>* sh, float emission_scale,
-                           bool lightmap_is_irradiance, float glazing_transmittance,
+                           bool lightmap_is_irradiance, const Glazing& glazing,
                            const std::vector<std::vector<float>>* seen, const DisplayOptions& options) {
   const Surface surface = build_surface(scene, atlas);
   PrelitOptions prelit;
   prelit.detail = options.mode == DisplayMode::Page ? options.detail : 1;
   prelit.emission_scale = emission_scale;
   prelit.lightmap_is_irradiance = lightmap_is_irradiance;
-  prelit.glazing_transmittance = glazing_transmittance;
+  prelit.glazing = glazing;
   DisplayLight light;
   light.pages = prelit_pages(scene, surface, pages, prelit);
   // Metered on the flat pages: showing the normal maps' bumps (--directional sh) changes where the

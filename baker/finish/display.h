@@ -37,12 +37,12 @@ struct DisplayLight {
 
 // `pages` and `vertex_values` are the bake's (BakeResult); `sh`, when not null, its --directional sh
 // pages, so normal maps show. `emission_scale`, `lightmap_is_irradiance` and
-// `glazing_transmittance` as the bake had them (BakeOptions). `seen`, when not null: the bake's
+// `glazing` as the bake had them (BakeOptions). `seen`, when not null: the bake's
 // display_view (per page, per lightmap texel), which the exposure meters on.
 DisplayLight display_light(const Scene& scene, const Atlas& atlas, const std::vector<LightmapPage>& pages,
                            const std::vector<std::vector<Rgb>>& vertex_values,
                            const std::vector<std::vector<LightmapPage>>* sh, float emission_scale,
-                           bool lightmap_is_irradiance, float glazing_transmittance,
+                           bool lightmap_is_irradiance, const Glazing& glazing,
                            const std::vector<std::vector<float>>* seen, const DisplayOptions& options);
 
 }  // namespace radbake

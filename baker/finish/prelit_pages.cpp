@@ -87,7 +87,7 @@ PrelitPages prelit_pages(const Scene& scene, const Surface& surface, const std::
   out.detail = options.detail > 0 ? options.detail
                                   : automatic_prelit_detail(scene, surface, options.max_page_size, options.sh != nullptr);
   const int n = out.detail;
-  const MaterialSampler materials(scene, surface, options.emission_scale, options.glazing_transmittance);
+  const MaterialSampler materials(scene, surface, options.emission_scale, options.glazing);
   out.pages.resize(lightmap.size());
   for (size_t p = 0; p < lightmap.size(); ++p) {
     out.pages[p].width = lightmap[p].width * n;

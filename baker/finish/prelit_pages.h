@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "baker/finish/finish.h"
+#include "baker/surface/glazing.h"
 #include "baker/surface/surface.h"
 #include "base/scene.h"
 
@@ -25,7 +26,7 @@ struct PrelitOptions {
   int detail = 0;              // pre-lit texels per lightmap texel along a side: 1, 2 or 4; 0: automatic
   int max_page_size = 4096;    // a pre-lit page side never passes this (automatic detail only)
   float emission_scale = 1;    // as BakeOptions::emission_scale
-  float glazing_transmittance = -1;  // as BakeOptions::glazing_transmittance
+  Glazing glazing;  // as BakeOptions::glazing
   bool lightmap_is_irradiance = true;  // false: the pages hold radiosity (lm/m2 leaving)
   // --directional sh's pages (c0, c1x, c1y, c1z; directional_lightmaps.h): the irradiance is read
   // for each pre-lit texel's normal, its normal map applied, so the bumps show. Null: the lightmap's.

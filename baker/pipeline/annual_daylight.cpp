@@ -65,17 +65,19 @@ DirectSky direct_sky(const Sensor& s, size_t index, const SkyPatches& fine, cons
                      const Surface& surface, const RayTracer& tracer, uint32_t rays, uint64_t seed) {
   const Vec3 origin = sensor_origin(s.position, s.normal, surface.scene_extent);
   Rng rng(seed, Stream::SensorSky, index);
-  const SkyRayPatterns pattern(rng);
+  const SensorRayPatterns pattern(rng);
   std::map<uint32_t, float> seen;
   DirectSky out;
-  for (uint32_t k = 0; k < rays; ++k) {
-    const Vec3 d = hemisphere_direction(s.normal, s.normal, cmj_sample(k, rays, pattern.direction));
-    const float passes = tracer.transmittance(origin, d, 0.0f, INFINITY);
-    if (!(passes > 0)) continue;
-    const float lux_per_luminance = float(M_PI) * passes / float(rays);
-    if (dot(d, compass.up) > 0) seen[uint32_t(compass.patch(fine, d))] += lux_per_luminance;
-    else out.ground += lux_per_luminance;
-  }
+  const uint32_t per_batch = rays_per_batch(rays);
+  for (uint32_t b = 0; b < kSensorBatches; ++b)
+    for (uint32_t k = 0; k < per_batch; ++k) {
+      const Vec3 d = hemisphere_direction(s.normal, s.normal, cmj_sample(k, per_batch, pattern.batch[b]));
+      const float passes = tracer.transmittance(origin, d, 0.0f, INFINITY);
+      if (!(passes > 0)) continue;
+      const float lux_per_luminance = float(M_PI) * passes / float(per_batch * kSensorBatches);
+      if (dot(d, compass.up) > 0) seen[uint32_t(compass.patch(fine, d))] += lux_per_luminance;
+      else out.ground += lux_per_luminance;
+    }
   out.patches.assign(seen.begin(), seen.end());
   return out;
 }
@@ -104,10 +106,15 @@ double sun_seen(const Sensor& eye, const SkyView& view, const Surface& surface, 
   return sun_disc_seen(view, tracer, sensor_origin(eye.position, eye.normal, surface.scene_extent), sun_rays, rng.next_u32());
 }
 
+// An hour's sun bins (columns after the sky's) and their weights: its reflected sunlight is
+// interpolated between the solves of the bins around its sun (SkyPatches::interpolation), so a
+// sunlit patch on a wall moves with the hour's sun, not from bin centre to bin centre.
+using SunColumns = std::vector<std::pair<size_t, float>>;
+
 // Each texel's year from its coefficients, over the occupied daylit hours, into pages.
 void texel_maps(const Elements& e, const Surface& surface, const std::vector<float>& coefficient, size_t columns,
                 size_t bins, const std::vector<float>& hour_luminance, const std::vector<float>& hour_sun,
-                const std::vector<size_t>& sun_bin_of_hour, const std::vector<SkyLight>& hours,
+                const std::vector<SunColumns>& sun_columns_of_hour, const std::vector<SkyLight>& hours,
                 const AnnualDaylightOptions& annual, AnnualDaylight& out) {
   std::vector<size_t> counted;
   for (size_t h = 0; h < hours.size(); ++h)
@@ -124,7 +131,8 @@ void texel_maps(const Elements& e, const Surface& surface, const std::vector<flo
         const float* l = &hour_luminance[h * bins];
         float lux = 0;
         for (size_t b = 0; b < bins; ++b) lux += c[b] * l[b];
-        if (hour_sun[h] > 0) lux += hour_sun[h] * c[bins + sun_bin_of_hour[h]];
+        if (hour_sun[h] > 0)
+          for (auto [column, weight] : sun_columns_of_hour[h]) lux += hour_sun[h] * weight * c[bins + column];
         over += lux >= annual.da_threshold;
         within += lux >= annual.udi_low && lux <= annual.udi_high;
         total += lux;
@@ -203,26 +211,26 @@ AnnualDaylight annual_daylight(const Scene& scene, const Atlas& atlas, const Bak
                                                               SubdivisionOptions{}, options.solve, seed, progress);
   const Patches& patches = light_between.patches;
 
-  // The sun bins the year's hours fall in.
-  std::vector<size_t> sun_bin_of_hour(hours.size(), SIZE_MAX);
+  // The sun bins around the year's suns, each solved once.
+  std::vector<SunColumns> sun_columns_of_hour(hours.size());
   std::map<size_t, size_t> solved_bin;  // bin of sun_bins -> column
   for (size_t h = 0; h < hours.size(); ++h) {
     const SkyLight& hour = hours[h];
     if (!hour.enabled || !(hour.sun_illuminance > 0) || !(hour.sun_zenith < M_PI / 2)) continue;
-    const size_t bin = sun_bins.patch_at(M_PI / 2 - hour.sun_zenith, hour.sun_azimuth);
-    sun_bin_of_hour[h] = solved_bin.emplace(bin, solved_bin.size()).first->second;
+    for (auto [bin, weight] : sun_bins.interpolation(M_PI / 2 - hour.sun_zenith, hour.sun_azimuth))
+      if (weight > 1e-6) sun_columns_of_hour[h].push_back({solved_bin.emplace(bin, solved_bin.size()).first->second, float(weight)});
   }
   std::vector<size_t> sun_bin_list(solved_bin.size());
   for (auto [bin, column] : solved_bin) sun_bin_list[column] = bin;
 
   // What each sensor's gather rays strike, and the sky it sees itself.
-  const uint32_t gather_rays = std::max<uint32_t>(1, options.sensor.rays);
+  const uint32_t gather_rays = rays_per_batch(options.sensor.rays) * kSensorBatches;
   std::vector<std::vector<int64_t>> hits(sensors.size());
   std::vector<DirectSky> seen_sky(sensors.size());
   tbb::parallel_for(tbb::blocked_range<size_t>(0, sensors.size(), 4), [&](const tbb::blocked_range<size_t>& r) {
     for (size_t s = r.begin(); s < r.end(); ++s) {
-      hits[s] = sensor_gather_hits(sensors[s], s, e, surface, tracer, gather_rays, seed);
-      seen_sky[s] = direct_sky(sensors[s], s, fine, compass, surface, tracer, rays, seed);
+      hits[s] = sensor_gather_hits(sensors[s], s, e, surface, tracer, options.sensor.rays, seed).elements;
+      seen_sky[s] = direct_sky(sensors[s], s, fine, compass, surface, tracer, options.sensor.sky_rays, seed);
     }
   });
 
@@ -272,7 +280,7 @@ AnnualDaylight annual_daylight(const Scene& scene, const Atlas& atlas, const Bak
       if (texels)
         for (size_t i = 0; i < n; ++i) {
           const uint32_t p = patches.patch_of_element[i];
-          texel_coefficient[i * columns + c] = direct[i] + (p == UINT32_MAX ? 0.0f : sum(gathered[p]) / 3);
+          texel_coefficient[i * columns + c] = direct[i] + (p == UINT32_MAX ? 0.0f : float(photopic(gathered[p])));
         }
       for (size_t s = 0; s < sensors.size(); ++s) {
         Rgb sent{};
@@ -281,7 +289,7 @@ AnnualDaylight annual_daylight(const Scene& scene, const Atlas& atlas, const Bak
           const Rgb indirect = p == UINT32_MAX ? Rgb{} : gathered[p];
           sent += e.reflectance[size_t(j)] * (Rgb{direct[size_t(j)], direct[size_t(j)], direct[size_t(j)]} + indirect);
         }
-        coefficient[s * columns + c] = float(double(sum(sent)) / 3.0 / gather_rays);
+        coefficient[s * columns + c] = float(photopic(sent) / gather_rays);
       }
       progress.advance();
     }
@@ -320,16 +328,17 @@ AnnualDaylight annual_daylight(const Scene& scene, const Atlas& atlas, const Bak
       coarse[bins - 1] = view.luminance(compass.up * -1.0f);
       const double sun = view.sun_up() ? hour.sun_illuminance : 0.0;
       for (size_t b = 0; b < bins; ++b) hour_luminance[h * bins + b] = float(coarse[b]);
-      hour_sun[h] = sun_bin_of_hour[h] != SIZE_MAX ? float(sun) : 0.0f;
+      hour_sun[h] = sun_columns_of_hour[h].empty() ? 0.0f : float(sun);
       for (size_t s = 0; s < sensors.size(); ++s) {
         double lux = seen_sky[s].ground * coarse[bins - 1];
         for (auto [q, w] : seen_sky[s].patches) lux += w * fine_luminance[q];
         const float* c = &coefficient[s * columns];
         for (size_t b = 0; b < bins; ++b) lux += c[b] * coarse[b];
-        if (sun > 0 && sun_bin_of_hour[h] != SIZE_MAX) {
+        if (sun > 0 && !sun_columns_of_hour[h].empty()) {
           const double direct = sun * direct_sun(sensors[s], s, view, surface, tracer, sun_rays, seed);
           out.sun_lux[h * sensors.size() + s] = float(direct);
-          lux += direct + sun * c[bins + sun_bin_of_hour[h]];
+          lux += direct;
+          for (auto [column, weight] : sun_columns_of_hour[h]) lux += sun * weight * c[bins + column];
         }
         out.lux[h * sensors.size() + s] = float(lux);
       }
@@ -339,7 +348,7 @@ AnnualDaylight annual_daylight(const Scene& scene, const Atlas& atlas, const Bak
     progress.advance(r.size());
   });
   progress.end();
-  if (texels) texel_maps(e, surface, texel_coefficient, columns, bins, hour_luminance, hour_sun, sun_bin_of_hour, hours, annual, out);
+  if (texels) texel_maps(e, surface, texel_coefficient, columns, bins, hour_luminance, hour_sun, sun_columns_of_hour, hours, annual, out);
   // The eyes' columns out of the sensors' series.
   const size_t listed = out.sensors.size();
   if (out.eyes > 0) {

@@ -380,7 +380,7 @@ BakeGeometry bake_geometry(const Scene& scene, const Atlas& atlas, const BakeOpt
   StageClock clock(times);
   BakeGeometry g;
   g.surface = clock.run("surface", [&] { return std::make_unique<Surface>(build_surface(scene, atlas)); });
-  g.materials = std::make_unique<MaterialSampler>(scene, *g.surface, options.emission_scale, options.glazing_transmittance);
+  g.materials = std::make_unique<MaterialSampler>(scene, *g.surface, options.emission_scale, options.glazing);
   g.tracer = clock.run("ray tracer", [&] { return std::make_unique<RayTracer>(*g.surface, g.materials.get()); });
   ElementOptions element_options = options.elements;
   if (plan.exhaustive) element_options.filter = FootprintFilter::Everywhere;
@@ -497,10 +497,24 @@ BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& given
       result.sensors.insert(result.sensors.end(), result.work_plane.sensors.begin(), result.work_plane.sensors.end());
     }
     const std::vector<Rgb> exitance = radiosity.empty() ? radiosity_of(elements, result.irradiance) : radiosity;
-    result.sensor_lux = clock.run("sensors", [&] {
-      return sensor_illuminance(result.sensors, scene.lights, elements, exitance, surface, *tracer, options.sky,
-                                options.sensor, options.seed, progress);
+    SensorReadings readings = clock.run("sensors", [&] {
+      if (options.method != Method::PathTrace)
+        return sensor_illuminance(result.sensors, scene.lights, elements, exitance, surface, *tracer, options.sky,
+                                  options.sensor, options.seed, progress);
+      // The reference: whole paths from each sensor, as many as its sky rays, sharing nothing
+      // with the sensors' own sampling.
+      std::vector<Vec3> points, normals;
+      for (const Sensor& s : result.sensors)
+        points.push_back(sensor_origin(s.position, s.normal, surface.scene_extent)), normals.push_back(s.normal);
+      PathTracedPoints traced = path_trace_points(points, normals, elements, surface, materials, scene.lights, &options.sky,
+                                                  *tracer, options.sensor.sky_rays, options.seed);
+      SensorReadings out;
+      for (const Rgb& e : traced.irradiance) out.lux.push_back(photopic(e));
+      out.standard_error = std::move(traced.standard_error);
+      return out;
     });
+    result.sensor_lux = std::move(readings.lux);
+    result.sensor_standard_error = std::move(readings.standard_error);
   }
   if (!options.views.empty()) {
     const std::vector<Rgb> exitance = radiosity.empty() ? radiosity_of(elements, result.irradiance) : radiosity;

@@ -15,6 +15,7 @@
 #include "baker/readings/work_plane.h"
 #include "baker/sharing/sharing.h"
 #include "baker/surface/elements.h"
+#include "baker/surface/glazing.h"
 #include "baker/transport/interreflection.h"
 #include "baker/transport/patches.h"
 #include "baker/transport/path_tracer.h"
@@ -59,9 +60,7 @@ struct BakeOptions {
   int threads = 0;              // 0: all cores
   StoredQuantity store = StoredQuantity::Irradiance;
   float emission_scale = 1;     // multiplies glTF emission before it is read as cd/m2 (see README)
-  // Visible transmittance of glazing (KHR_materials_transmission) whose material has no
-  // extras.visible_transmittance, 0..1; < 0: a clear pane of the material's index of refraction.
-  float glazing_transmittance = -1;
+  Glazing glazing;              // KHR_materials_transmission's panes (baker/surface/glazing.h)
   bool keep_direct = false;     // keep BakeResult::direct (for debug dumps); costs 12 bytes per texel
   size_t preview_every = 0;     // with a preview callback: pages of the estimate every N shots or sweeps
   Sharing sharing;              // a team of processes, a checkpoint, a slice of the gather (sharing.h)

@@ -70,6 +70,7 @@ struct BakeResult {
   std::vector<float> standard_error;               // Method::PathTrace: per element, lux; else empty
   std::vector<Sensor> sensors;                     // BakeOptions::sensors, then the work plane's
   std::vector<double> sensor_lux;                  // per sensor
+  std::vector<double> sensor_standard_error;       // per sensor, lux: its rays' noise (sensor_points.h)
   std::vector<FisheyeImage> views;                 // per BakeOptions::views
   std::vector<PerspectiveImage> perspectives;      // per BakeOptions::views, the same eye
   std::vector<Glare> glare;                        // per view

@@ -28,7 +28,7 @@ struct Seeing {
     if (hit.missed()) return sky.enabled ? view.luminance(d) : 0.0;
     if (!hit.front) return 0;
     const int64_t e = element_for_hit(elements, surface, tracer, hit);
-    return e >= 0 && elements.valid(size_t(e)) ? double(radbake::sum(exitance[size_t(e)])) / 3.0 / M_PI : 0.0;
+    return e >= 0 && elements.valid(size_t(e)) ? photopic(exitance[size_t(e)]) / M_PI : 0.0;
   }
 
   // The share of the sun's disc seen from the eye (0 when the sun is down or there is none).

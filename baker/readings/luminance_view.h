@@ -37,7 +37,7 @@ struct PerspectiveImage {
   std::vector<float> luminance;
 };
 
-// `exitance` per element, lm/m2 (emission plus reflected light, the mean of R, G and B is taken);
+// `exitance` per element, lm/m2 (emission plus reflected light, photopic luminance taken: base/math.h);
 // `sky` may be disabled.
 PerspectiveImage render_perspective(const EyeView& eye, const ViewOptions& options, const Elements& elements,
                                     const std::vector<Rgb>& exitance, const Surface& surface, const RayTracer& tracer,

@@ -5,39 +5,46 @@
 #include <cmath>
 
 #include "baker/direct/direct_light.h"
-#include "baker/direct/sky_light.h"
 #include "baker/surface/sampling.h"
 #include "baker/transport/patch_transport.h"
 
 namespace radbake {
 
-std::vector<int64_t> sensor_gather_hits(const Sensor& s, size_t index, const Elements& elements, const Surface& surface,
-                                        const RayTracer& tracer, uint32_t rays, uint64_t seed) {
+SensorHits sensor_gather_hits(const Sensor& s, size_t index, const Elements& elements, const Surface& surface,
+                              const RayTracer& tracer, uint32_t rays, uint64_t seed) {
   const Vec3 origin = sensor_origin(s.position, s.normal, surface.scene_extent);
   Rng rng(seed, Stream::SensorGather, index);
-  const uint32_t pattern = rng.next_u32();
-  std::vector<int64_t> hits;
-  for (uint32_t k = 0; k < rays; ++k) {
-    const Vec3 d = cosine_direction(s.normal, cmj_sample(k, rays, pattern));
-    const Hit hit = tracer.intersect_light_path(origin, d, 0.0f, INFINITY);
-    if (hit.missed() || !hit.front) continue;
-    const int64_t element = element_for_hit(elements, surface, tracer, hit);
-    if (element >= 0 && elements.valid(size_t(element))) hits.push_back(element);
+  uint32_t pattern[kSensorBatches];
+  for (uint32_t& p : pattern) p = rng.next_u32();
+  const uint32_t per_batch = rays_per_batch(rays);
+  SensorHits hits;
+  for (uint32_t b = 0; b < kSensorBatches; ++b) {
+    for (uint32_t k = 0; k < per_batch; ++k) {
+      const Vec3 d = cosine_direction(s.normal, cmj_sample(k, per_batch, pattern[b]));
+      const Hit hit = tracer.intersect_light_path(origin, d, 0.0f, INFINITY);
+      if (hit.missed() || !hit.front) continue;
+      const int64_t element = element_for_hit(elements, surface, tracer, hit);
+      if (element >= 0 && elements.valid(size_t(element))) hits.elements.push_back(element);
+    }
+    hits.batch_end[b] = hits.elements.size();
   }
   return hits;
 }
 
-std::vector<double> sensor_illuminance(const std::vector<Sensor>& sensors, const std::vector<Light>& lights,
-                                       const Elements& elements, const std::vector<Rgb>& exitance,
-                                       const Surface& surface, const RayTracer& tracer, const SkyLight& sky,
-                                       const SensorOptions& options, uint64_t seed, Progress& progress) {
-  std::vector<double> lux(sensors.size(), 0.0);
+SensorReadings sensor_illuminance(const std::vector<Sensor>& sensors, const std::vector<Light>& lights,
+                                  const Elements& elements, const std::vector<Rgb>& exitance, const Surface& surface,
+                                  const RayTracer& tracer, const SkyLight& sky, const SensorOptions& options,
+                                  uint64_t seed, Progress& progress) {
+  std::vector<SensorBatches> batches(sensors.size(), SensorBatches{});
   if (sky.enabled) {
     std::vector<Vec3> points, normals;
     for (const Sensor& s : sensors) points.push_back(sensor_origin(s.position, s.normal, surface.scene_extent)), normals.push_back(s.normal);
-    lux = sky_illuminance_at(points, normals, tracer, sky, seed);
+    batches = sky_illuminance_at(points, normals, tracer, sky, options.sky_rays, seed);
   }
-  const uint32_t rays = std::max<uint32_t>(1, options.rays);
+  const uint32_t per_batch = rays_per_batch(options.rays);
+  SensorReadings out;
+  out.lux.assign(sensors.size(), 0.0);
+  out.standard_error.assign(sensors.size(), 0.0);
   progress.begin("sensors", sensors.size());
   tbb::parallel_for(tbb::blocked_range<size_t>(0, sensors.size(), 4), [&](const tbb::blocked_range<size_t>& r) {
     for (size_t i = r.begin(); i < r.end(); ++i) {
@@ -54,14 +61,23 @@ std::vector<double> sensor_illuminance(const std::vector<Sensor>& sensors, const
                                                  std::isfinite(distance) ? distance * (1 - 1e-5f) : INFINITY);
       }
       // Cosine-distributed rays: E = pi * mean radiance = mean exitance of what they strike.
-      Rgb seen{};
-      for (int64_t element : sensor_gather_hits(s, i, elements, surface, tracer, rays, seed)) seen += exitance[size_t(element)];
-      lux[i] += double(sum(direct + seen / float(rays))) / 3.0;
+      const SensorHits hits = sensor_gather_hits(s, i, elements, surface, tracer, options.rays, seed);
+      double mean = 0, square = 0;
+      for (uint32_t b = 0; b < kSensorBatches; ++b) {
+        Rgb seen{};
+        for (size_t h = b ? hits.batch_end[b - 1] : 0; h < hits.batch_end[b]; ++h) seen += exitance[size_t(hits.elements[h])];
+        const double lux = photopic(direct + seen / float(per_batch)) + batches[i][b];
+        mean += lux, square += lux * lux;
+      }
+      mean /= kSensorBatches;
+      out.lux[i] = mean;
+      const double variance = std::max(0.0, (square / kSensorBatches - mean * mean) * kSensorBatches / (kSensorBatches - 1));
+      out.standard_error[i] = std::sqrt(variance / kSensorBatches);
     }
     progress.advance(r.size());
   });
   progress.end();
-  return lux;
+  return out;
 }
 
 }  // namespace radbake

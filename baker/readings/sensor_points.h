@@ -4,9 +4,11 @@
 // cosine-distributed rays that take the exitance of the texel they strike.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
+#include "baker/direct/sky_light.h"
 #include "baker/surface/elements.h"
 #include "baker/surface/ray_tracer.h"
 #include "baker/surface/surface.h"
@@ -22,21 +24,34 @@ struct Sensor {
   Vec3 normal{0, 1, 0};  // unit: which way the meter faces (up for a work plane)
 };
 
+// A sensor is one point, so it can afford many more rays than a texel: its sky is sampled apart
+// from the texels' (a texel takes SkyLight::rays).
 struct SensorOptions {
-  uint32_t rays = 1024;  // hemisphere rays per sensor for the light surfaces send; noise ~ 1/sqrt
+  uint32_t rays = 4096;       // cosine-distributed rays per sensor for the light surfaces send
+  uint32_t sky_rays = 16384;  // cosine-distributed rays per sensor for the sky and the ground
 };
 
-// The valid elements sensor `index`'s `rays` cosine-distributed gather rays strike, one entry per
-// ray that strikes one (rays that leave the scene or strike a back face are not listed); the
-// surfaces' part of its illuminance is the sum of their exitances over `rays`.
-std::vector<int64_t> sensor_gather_hits(const Sensor& sensor, size_t index, const Elements& elements,
-                                        const Surface& surface, const RayTracer& tracer, uint32_t rays, uint64_t seed);
+// The valid elements a sensor's cosine-distributed gather rays strike (kSensorBatches batches of
+// rays_per_batch(rays), sky_light.h), one entry per ray that strikes one (rays that leave the
+// scene or strike a back face are not listed), batch after batch: batch b's end at batch_end[b].
+// The surfaces' part of its illuminance is the sum of their exitances over the rays cast.
+struct SensorHits {
+  std::vector<int64_t> elements;
+  std::array<size_t, kSensorBatches> batch_end{};
+};
+SensorHits sensor_gather_hits(const Sensor& sensor, size_t index, const Elements& elements, const Surface& surface,
+                              const RayTracer& tracer, uint32_t rays, uint64_t seed);
 
-// Per sensor, lux (the mean of R, G and B, as the energy balance counts light). `exitance` is per
-// element, lm/m2 (emission plus reflected light); `sky` may be disabled.
-std::vector<double> sensor_illuminance(const std::vector<Sensor>& sensors, const std::vector<Light>& lights,
-                                       const Elements& elements, const std::vector<Rgb>& exitance,
-                                       const Surface& surface, const RayTracer& tracer, const SkyLight& sky,
-                                       const SensorOptions& options, uint64_t seed, Progress& progress);
+// Per sensor, lux (photopic: base/math.h) and its noise: the standard error of the mean of its
+// batches, each batch's reading being the exact lamps plus its share of the sky rays and of the
+// gather rays. `exitance` is per element, lm/m2 (emission plus reflected light); `sky` may be
+// disabled. The noise of the finished bake's exitances, which every batch reads alike, is not in it.
+struct SensorReadings {
+  std::vector<double> lux, standard_error;
+};
+SensorReadings sensor_illuminance(const std::vector<Sensor>& sensors, const std::vector<Light>& lights,
+                                  const Elements& elements, const std::vector<Rgb>& exitance, const Surface& surface,
+                                  const RayTracer& tracer, const SkyLight& sky, const SensorOptions& options,
+                                  uint64_t seed, Progress& progress);
 
 }  // namespace radbake

@@ -18,7 +18,7 @@ std::vector<SurfaceStatistics> surface_statistics(const Scene& scene, const Surf
   for (size_t i = 0; i < elements.size(); ++i) {
     if (!elements.valid(i)) continue;
     SurfaceStatistics& s = out[surface.instance[elements.triangle[i]]];
-    const double lux = double(sum(irradiance[i])) / 3.0;
+    const double lux = photopic(irradiance[i]);
     s.area += elements.area[i];
     weighted[size_t(s.instance)] += lux * elements.area[i];
     s.min = std::min(s.min, lux);

@@ -15,7 +15,7 @@ struct SurfaceStatistics {
   std::string name;  // the instance's (node's) name
   int instance = -1;
   double area = 0;   // m^2 of valid texels
-  double mean = 0, min = 0, max = 0;  // lux (mean of R, G, B per texel)
+  double mean = 0, min = 0, max = 0;  // lux (photopic, per texel)
   double uniformity = 0;  // min / mean; 0 when the mean is 0
 };
 

@@ -46,43 +46,19 @@ Vec2 apply_transform(const TextureTransform& t, Vec2 uv) {
   return {c * s.x - r * s.y + t.offset.x, r * s.x + c * s.y + t.offset.y};
 }
 
-// A thin clear pane of index n, light arriving at an angle of cosine c: each face reflects
-// Fresnel's R_s and R_p, the light bounces between the two faces, (1 - R)^2 (1 + R^2 + R^4 + ...)
-// = (1 - R) / (1 + R) of each polarisation passes, and unpolarised light takes their mean. Along
-// the normal R = ((n - 1) / (n + 1))^2: 0.92 for glass (n = 1.5); at grazing, nothing.
-float clear_pane_transmittance(float c, float ior) {
-  if (!(c > 1e-6f)) return 0;
-  c = std::min(c, 1.0f);
-  const float sin_inside = std::sqrt(1 - c * c) / ior, cos_inside = std::sqrt(std::max(0.0f, 1 - sin_inside * sin_inside));
-  const float rs = (c - ior * cos_inside) / (c + ior * cos_inside), rp = (cos_inside - ior * c) / (cos_inside + ior * c);
-  auto passes = [](float r) { return (1 - r * r) / (1 + r * r); };
-  return 0.5f * (passes(rs) + passes(rp));
-}
-
-// The cosine-weighted mean over the hemisphere of clear_pane_transmittance(c) / (its value along
-// the normal): what a pane passes of light arriving from everywhere alike (0.91 for glass).
-float diffuse_over_normal(float ior) {
-  constexpr int kSteps = 512;
-  double sum = 0;
-  for (int k = 0; k < kSteps; ++k) {
-    const double c = (k + 0.5) / kSteps;
-    sum += 2 * c * clear_pane_transmittance(float(c), ior) / kSteps;
-  }
-  return float(sum / clear_pane_transmittance(1, ior));
-}
-
 }  // namespace
 
 MaterialSampler::MaterialSampler(const Scene& scene, const Surface& surface, float emission_scale,
-                                 float glazing_transmittance)
+                                 const Glazing& glazing)
     : scene_(scene), surface_(surface), emission_scale_(emission_scale) {
   for (const Material& m : scene.materials) {
-    const float glazing = m.visible_transmittance >= 0 ? m.visible_transmittance
-                          : glazing_transmittance >= 0 ? glazing_transmittance
-                                                       : clear_pane_transmittance(1, m.ior);
-    pane_transmittance_.push_back(m.transmission * glazing);
-    clear_pane_along_normal_.push_back(clear_pane_transmittance(1, m.ior));
-    pane_diffuse_ratio_.push_back(m.transmission > 0 ? diffuse_over_normal(m.ior) : 1.0f);
+    // A clear pane of the material's index when nothing says what it passes: its two faces'
+    // reflections alone, (1 - r0) / (1 + r0).
+    const float along_normal = m.visible_transmittance >= 0 ? m.visible_transmittance
+                               : glazing.transmittance >= 0 ? glazing.transmittance
+                                                            : PaneCurve(GlazingModel::Fresnel, m.ior, 1).clear_faces();
+    pane_transmittance_.push_back(m.transmission * along_normal);
+    pane_curve_.push_back(PaneCurve(glazing.model, m.ior, along_normal));
     alpha_texture_.push_back(m.alpha_mode != AlphaMode::Opaque && m.base_color_texture.present()
                                  ? texture_for(m.base_color_texture.image, Decode::Alpha)
                                  : -1);
@@ -250,11 +226,9 @@ float MaterialSampler::transmittance(uint32_t triangle, Vec2 bary, Vec3 directio
   const float present = coverage(triangle, bary, 0);
   float pane = pane_transmittance_[size_t(mi)];
   if (pane > 0) {
-    // The glazing's visible transmittance is along the normal; away from it, less, as a clear
-    // pane of the material's index loses more to reflection.
-    const float ior = scene_.materials[size_t(mi)].ior;
+    // The glazing's visible transmittance is along the normal; away from it, less (glazing.h).
     const float c = std::fabs(dot(direction, surface_.normal[triangle])) / length(direction);
-    pane *= clear_pane_transmittance(c, ior) / clear_pane_along_normal_[size_t(mi)];
+    pane *= pane_curve_[size_t(mi)].relative(c);
   }
   return (1 - present) + present * pane;
 }
@@ -263,7 +237,7 @@ float MaterialSampler::diffuse_transmittance(uint32_t triangle, Vec2 bary) const
   const int mi = surface_.material[triangle];
   if (mi < 0) return 0;
   const float present = coverage(triangle, bary, 0);
-  return (1 - present) + present * pane_transmittance_[size_t(mi)] * pane_diffuse_ratio_[size_t(mi)];
+  return (1 - present) + present * pane_transmittance_[size_t(mi)] * pane_curve_[size_t(mi)].diffuse_ratio();
 }
 
 bool MaterialSampler::see_through(uint32_t triangle) const {

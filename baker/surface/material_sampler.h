@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "baker/surface/glazing.h"
 #include "baker/surface/surface.h"
 #include "base/math.h"
 #include "base/scene.h"
@@ -24,11 +25,9 @@ constexpr float kMaxReflectance = 0.999f;
 class MaterialSampler {
  public:
   // `emission_scale` multiplies every material's emission (a unit conversion for the source).
-  // `glazing_transmittance` (0..1), when given, is the glazing's visible transmittance wherever a
-  // material has no extras.visible_transmittance of its own; otherwise a clear pane of the
-  // material's index of refraction.
-  MaterialSampler(const Scene& scene, const Surface& surface, float emission_scale = 1,
-                  float glazing_transmittance = -1);
+  // `glazing` says what panes pass along their normal where a material has no
+  // extras.visible_transmittance of its own, and how they pass less obliquely.
+  MaterialSampler(const Scene& scene, const Surface& surface, float emission_scale = 1, const Glazing& glazing = {});
 
   // `spacing` is the distance, in lightmap texels, between neighbouring samples of the caller; it
   // chooses the texture mip level so that each sample averages its share of the footprint.
@@ -80,8 +79,7 @@ class MaterialSampler {
   // Per material: index into textures_ for base colour, metallic, emission (-1 when absent).
   std::vector<int> base_texture_, metallic_texture_, emissive_texture_, alpha_texture_, normal_texture_;
   std::vector<float> pane_transmittance_;  // per material: what its glazing lets through along its normal
-  std::vector<float> pane_diffuse_ratio_;  // per material: its diffuse transmittance over that
-  std::vector<float> clear_pane_along_normal_;  // per material: a clear pane of its index, along the normal
+  std::vector<PaneCurve> pane_curve_;      // per material: its glazing at other angles
 };
 
 }  // namespace radbake

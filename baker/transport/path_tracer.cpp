@@ -278,21 +278,34 @@ class PathTracer {
 
 }  // namespace
 
-std::vector<Rgb> path_trace_points(const std::vector<Vec3>& points, const std::vector<Vec3>& normals, const Elements& e,
+PathTracedPoints path_trace_points(const std::vector<Vec3>& points, const std::vector<Vec3>& normals, const Elements& e,
                                    const Surface& surface, const MaterialSampler& materials,
                                    const std::vector<Light>& lights, const SkyLight* sky, const RayTracer& tracer,
                                    uint32_t samples, uint64_t seed) {
   const PathTracer tracer_of_paths(e, surface, materials, lights, sky, tracer);
-  std::vector<Rgb> out(points.size());
-  samples = std::max<uint32_t>(1, samples);
+  PathTracedPoints out;
+  out.irradiance.assign(points.size(), Rgb{});
+  out.standard_error.assign(points.size(), 0.0);
+  const uint32_t per_batch = std::max<uint32_t>(1, samples / kBatches);
   tbb::parallel_for(size_t(0), points.size(), [&](size_t i) {
     Rng rng(seed, Stream::PathTrace, (uint64_t(1) << 48) ^ i);
-    const uint32_t pattern = rng.next_u32();
     uint64_t bounces = 0;
     Rgb sum{};
-    for (uint32_t k = 0; k < samples; ++k)
-      sum += tracer_of_paths.estimate_at(points[i], normals[i], cmj_sample(k, samples, pattern), rng, bounces);
-    out[i] = sum / float(samples);
+    double sum_photopic = 0, sum_squares = 0;
+    for (uint32_t b = 0; b < kBatches; ++b) {
+      // Each batch stratified on its own, as path_trace's (below).
+      const uint32_t pattern = rng.next_u32();
+      Rgb batch{};
+      for (uint32_t k = 0; k < per_batch; ++k)
+        batch += tracer_of_paths.estimate_at(points[i], normals[i], cmj_sample(k, per_batch, pattern), rng, bounces);
+      batch = batch / float(per_batch);
+      sum += batch;
+      sum_photopic += photopic(batch), sum_squares += photopic(batch) * photopic(batch);
+    }
+    out.irradiance[i] = sum / float(kBatches);
+    const double mean = sum_photopic / kBatches;
+    const double variance = std::max(0.0, (sum_squares / kBatches - mean * mean) * kBatches / (kBatches - 1));
+    out.standard_error[i] = std::sqrt(variance / kBatches);
   });
   return out;
 }

@@ -49,9 +49,15 @@ PathTraced path_trace(const Elements& elements, const Surface& surface, const Ma
                       const std::vector<Light>& lights, const SkyLight* sky, const RayTracer& tracer,
                       const PathTraceOptions& options, uint64_t seed, Progress& progress);
 
-// Irradiance (lux) at points in the air, point i facing unit normals[i], by `samples` paths each:
-// the reference light probes and sensors are measured against.
-std::vector<Rgb> path_trace_points(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
+// Irradiance (lux) at points in the air, point i facing unit normals[i], by `samples` paths each
+// (rounded down to a multiple of 8, the batches), with the standard error of each point's
+// photopic reading (base/math.h) from its batches' spread: the reference light probes and sensors
+// are measured against (--method pathtrace reads sensors so).
+struct PathTracedPoints {
+  std::vector<Rgb> irradiance;
+  std::vector<double> standard_error;  // lux, photopic
+};
+PathTracedPoints path_trace_points(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
                                    const Elements& elements, const Surface& surface, const MaterialSampler& materials,
                                    const std::vector<Light>& lights, const SkyLight* sky, const RayTracer& tracer,
                                    uint32_t samples, uint64_t seed);

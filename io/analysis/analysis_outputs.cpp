@@ -19,12 +19,12 @@ void write_false_colour(const std::string& path, const std::vector<float>& value
   write_png(path, image.image.width, image.image.height, image.image.rgb);
 }
 
-// Per page, each texel's value (mean of R, G, B) times `factor` where an element wrote it, NaN in
+// Per page, each texel's photopic value times `factor` where an element wrote it, NaN in
 // the padding.
 std::vector<float> page_values(const LightmapPage& page, double factor) {
   std::vector<float> values(page.texels.size(), std::numeric_limits<float>::quiet_NaN());
   for (size_t k = 0; k < values.size(); ++k)
-    if (page.valid[k]) values[k] = float(double(sum(page.texels[k])) / 3.0 * factor);
+    if (page.valid[k]) values[k] = float(photopic(page.texels[k]) * factor);
   return values;
 }
 
@@ -70,16 +70,18 @@ void write_page_map(const std::string& path, const LightmapPage& page, const Fal
   write_false_colour(path, page_values(page, 1), page.width, page.height, scale, 1);
 }
 
-ReadingSummary summarise(const std::vector<double>& values) {
+ReadingSummary summarise(const std::vector<double>& values, const std::vector<double>& standard_errors) {
   ReadingSummary s;
   s.count = values.size();
   if (values.empty()) return s;
   s.min = *std::min_element(values.begin(), values.end());
   s.max = *std::max_element(values.begin(), values.end());
-  double total = 0;
+  double total = 0, squared_errors = 0;
   for (double v : values) total += v;
+  for (double e : standard_errors) squared_errors += e * e;
   s.mean = total / double(values.size());
   s.uniformity = s.mean > 0 ? s.min / s.mean : 0.0;
+  if (!standard_errors.empty() && s.mean > 0) s.noise = std::sqrt(squared_errors / double(standard_errors.size())) / s.mean;
   return s;
 }
 
@@ -88,9 +90,11 @@ std::vector<Sensor> read_sensor_csv(const std::string& path, size_t max_points) 
   if (!in) throw InputError("cannot read the sensor file '" + clipped(path) + "'");
   std::vector<Sensor> sensors;
   std::string line;
+  bool header_seen = false;
   for (size_t number = 1; std::getline(in, line); ++number) {
     if (line.size() > 4096) throw InputError(clipped(path) + " line " + std::to_string(number) + ": too long for a sensor");
     if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (number == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);  // a spreadsheet's UTF-8 byte-order mark
     if (line.find_first_not_of(" \t") == std::string::npos || line[line.find_first_not_of(" \t")] == '#') continue;
     std::vector<double> fields;
     std::stringstream cells(line);
@@ -103,7 +107,11 @@ std::vector<Sensor> read_sensor_csv(const std::string& path, size_t max_points) 
       if (end == cell.c_str() || (end && *end != '\0')) numeric = false;
       fields.push_back(v);
     }
-    if (!numeric && sensors.empty() && number == 1) continue;  // a header
+    // One header (x,y,z or any names), anywhere before the first point: after comments, say.
+    if (!numeric && sensors.empty() && !header_seen) {
+      header_seen = true;
+      continue;
+    }
     const bool finite = std::all_of(fields.begin(), fields.end(), [](double v) { return std::isfinite(v) && std::fabs(v) < 1e7; });
     if (!numeric || !finite || (fields.size() != 3 && fields.size() != 6))
       throw InputError(clipped(path) + " line " + std::to_string(number) +
@@ -129,9 +137,13 @@ AnalysisFiles write_analysis(const BakeResult& result, const std::string& folder
   AnalysisFiles out;
   const double to_percent = options.daylight_factor_reference > 0 ? 100 / options.daylight_factor_reference : 0;
   const std::vector<double>& lux = result.sensor_lux;
+  // The readings' noise, when the bake states it (sensor_points.h), else none.
+  std::vector<double> error = result.sensor_standard_error;
+  error.resize(lux.size(), 0.0);
   if (!result.sensors.empty()) {
     std::ofstream csv(folder + "/sensors.csv");
-    csv << "x,y,z,nx,ny,nz,lux" << (to_percent > 0 ? ",daylight_factor_percent" : "") << "\n";
+    csv << "x,y,z,nx,ny,nz,lux" << (to_percent > 0 ? ",daylight_factor_percent" : "") << ",lux_standard_error"
+        << (to_percent > 0 ? ",daylight_factor_standard_error_percent" : "") << "\n";
     char row[256];
     for (size_t k = 0; k < result.sensors.size(); ++k) {
       const Sensor& s = result.sensors[k];
@@ -142,47 +154,57 @@ AnalysisFiles write_analysis(const BakeResult& result, const std::string& folder
         std::snprintf(row, sizeof row, ",%.6g", lux[k] * to_percent);
         csv << row;
       }
+      std::snprintf(row, sizeof row, ",%.3g", error[k]);
+      csv << row;
+      if (to_percent > 0) {
+        std::snprintf(row, sizeof row, ",%.3g", error[k] * to_percent);
+        csv << row;
+      }
       csv << "\n";
     }
     if (!csv) throw std::runtime_error("cannot write " + folder + "/sensors.csv");
     out.files.push_back("sensors.csv");
     // The listed sensors come first, the work plane's after them; each set has its own summary.
-    const std::vector<double> listed(lux.begin(), lux.end() - ptrdiff_t(result.work_plane.sensors.size()));
-    out.sensors = summarise(listed);
+    const ptrdiff_t listed_count = ptrdiff_t(lux.size() - result.work_plane.sensors.size());
+    const std::vector<double> listed(lux.begin(), lux.begin() + listed_count);
+    const std::vector<double> listed_error(error.begin(), error.begin() + listed_count);
+    out.sensors = summarise(listed, listed_error);
     if (to_percent > 0) {
-      std::vector<double> percent(listed);
+      std::vector<double> percent(listed), percent_error(listed_error);
       for (double& v : percent) v *= to_percent;
-      out.sensors_daylight_factor = summarise(percent);
+      for (double& v : percent_error) v *= to_percent;
+      out.sensors_daylight_factor = summarise(percent, percent_error);
     }
   }
   const WorkPlane& plane = result.work_plane;
   if (!plane.sensors.empty()) {
     out.outdoor_points = plane.outdoor_points;
     out.sliver_points = plane.sliver_points;
-    std::vector<double> percent(lux);
+    std::vector<double> percent(lux), percent_error(error);
     for (double& v : percent) v *= to_percent;
-    auto readings_of = [&](const std::vector<int32_t>& sensors, const std::vector<double>& values) {
-      std::vector<double> readings;
+    for (double& v : percent_error) v *= to_percent;
+    auto readings_of = [&](const std::vector<int32_t>& sensors, const std::vector<double>& values, const std::vector<double>& errors) {
+      std::vector<double> readings, reading_errors;
       for (int32_t k : sensors)
-        if (k >= 0) readings.push_back(values[size_t(k)]);
-      return summarise(readings);
+        if (k >= 0) readings.push_back(values[size_t(k)]), reading_errors.push_back(errors[size_t(k)]);
+      return summarise(readings, reading_errors);
     };
     std::vector<int32_t> all;
     for (const WorkPlaneStorey& storey : plane.storeys) {
       StoreyReadings readings;
       readings.floor_height = storey.floor_height;
-      readings.lux = readings_of(storey.sensor_at, lux);
-      if (to_percent > 0) readings.daylight_factor = readings_of(storey.sensor_at, percent);
+      readings.lux = readings_of(storey.sensor_at, lux, error);
+      if (to_percent > 0) readings.daylight_factor = readings_of(storey.sensor_at, percent, percent_error);
       out.storeys.push_back(readings);
       all.insert(all.end(), storey.sensor_at.begin(), storey.sensor_at.end());
     }
-    out.work_plane = readings_of(all, lux);
+    out.work_plane = readings_of(all, lux, error);
     FalseColourScale scale = options.scale;
     scale.unit = "lx";
     const std::vector<std::string> maps = write_work_plane_maps(folder, "work_plane", plane, lux, scale);
     std::vector<std::string> percent_maps;
     if (to_percent > 0) {
-      out.work_plane_daylight_factor = readings_of(all, percent);
+      out.work_plane_daylight_factor = readings_of(all, percent, percent_error);
       scale.unit = "%";
       scale.max = 0;  // the lux scale's max means nothing in percent
       percent_maps = write_work_plane_maps(folder, "work_plane_daylight_factor", plane, percent, scale);
@@ -203,8 +225,8 @@ AnalysisFiles write_analysis(const BakeResult& result, const std::string& folder
       for (int32_t k : room.sensors)
         r.centre_x += result.sensors[size_t(k)].position.x, r.centre_z += result.sensors[size_t(k)].position.z;
       r.centre_x /= double(room.sensors.size()), r.centre_z /= double(room.sensors.size());
-      r.lux = readings_of(room.sensors, lux);
-      if (to_percent > 0) r.daylight_factor = readings_of(room.sensors, percent);
+      r.lux = readings_of(room.sensors, lux, error);
+      if (to_percent > 0) r.daylight_factor = readings_of(room.sensors, percent, percent_error);
       char row[320];
       std::snprintf(row, sizeof row, "%d,%d,%zu,%.3f,%.3f,%.3f,%.6g,%.6g,%.6g,%.4f", r.storey + 1, r.number, r.lux.count,
                     r.area, r.centre_x, r.centre_z, r.lux.min, r.lux.mean, r.lux.max, r.lux.uniformity);

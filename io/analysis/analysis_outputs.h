@@ -25,9 +25,11 @@ struct ReadingSummary {
   size_t count = 0;
   double min = 0, mean = 0, max = 0;  // arithmetic mean over the points (a regular grid: the area mean)
   double uniformity = 0;              // min / mean (EN 12464's U0), 0 when the mean is 0
+  double noise = 0;                   // the RMS of the points' standard errors over the mean (0: not stated)
 };
 
-ReadingSummary summarise(const std::vector<double>& values);
+// `standard_errors`, when given, parallel to `values` and in their unit.
+ReadingSummary summarise(const std::vector<double>& values, const std::vector<double>& standard_errors = {});
 
 struct ViewGlare {
   EyeView eye;
@@ -71,7 +73,7 @@ std::vector<std::string> write_work_plane_maps(const std::string& folder, const 
                                                const WorkPlane& plane, const std::vector<double>& values,
                                                FalseColourScale scale);
 
-// A lightmap page in false colour with a legend: each written texel's value (mean of R, G, B),
+// A lightmap page in false colour with a legend: each written texel's value (photopic: base/math.h),
 // the padding grey.
 void write_page_map(const std::string& path, const LightmapPage& page, const FalseColourScale& scale);
 

@@ -30,7 +30,8 @@ nlohmann::ordered_json daylight_json(const std::optional<DaylightSummary>& dayli
 nlohmann::ordered_json readings_json(const ReadingSummary& lux, const ReadingSummary& percent) {
   if (lux.count == 0) return nullptr;
   nlohmann::ordered_json out = {{"points", lux.count}, {"min_lx", lux.min}, {"mean_lx", lux.mean},
-                                {"max_lx", lux.max}, {"uniformity_min_over_mean", lux.uniformity}};
+                                {"max_lx", lux.max}, {"uniformity_min_over_mean", lux.uniformity},
+                                {"noise_rms_standard_error_over_mean", lux.noise}};
   if (percent.count > 0)
     out["daylight_factor_percent"] = {{"min", percent.min}, {"mean", percent.mean}, {"max", percent.max}};
   return out;

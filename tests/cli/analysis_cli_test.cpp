@@ -51,11 +51,15 @@ TEST(AnalysisCli, AWorkPlaneUnderAnOvercastSkyGivesLuxDaylightFactorsAndTheirIma
   const std::vector<std::vector<double>> rows = csv_rows(out + "/sensors.csv");
   ASSERT_EQ(rows.size(), 16u);
   for (const std::vector<double>& row : rows) {
-    ASSERT_EQ(row.size(), 8u);
+    ASSERT_EQ(row.size(), 10u);  // position, normal, lux, daylight factor, their standard errors
     EXPECT_NEAR(row[1], 0.8, 1e-4);  // over the floor at y = 0
-    // 0.1% bounds the sky rays' noise at a point (256 stratified rays over a 3:1 sky).
+    // 0.1% bounds the sky rays' noise at a point (16,384 stratified rays over a 3:1 sky), and what
+    // each point states of it.
     EXPECT_NEAR(row[6], 8000, 8);
     EXPECT_NEAR(row[7], 100 * row[6] / 8000, 1e-3);
+    EXPECT_GT(row[8], 0);
+    EXPECT_LT(row[8], 8);
+    EXPECT_NEAR(row[9], 100 * row[8] / 8000, 1e-4);
   }
   const nlohmann::json report = nlohmann::json::parse(test::slurp(out + "/report.json"));
   EXPECT_EQ(report["work_plane"]["points"], 16);
@@ -97,8 +101,11 @@ TEST(AnalysisCli, TheDaylightFactorLeavesTheScenesOwnLightsOut) {
   EXPECT_GT(lamp, 0.5 * sky);  // the lamp is no small part: leaving it in would show
 }
 
+// A byte-order mark, comments and one header before the first point are skipped (issue 30: a
+// comment before the header was refused).
 TEST(AnalysisCli, SensorsFromACsvFileFaceTheWayTheyAreTold) {
   const std::string csv = test::write_text_file("analysis_sensors.csv",
+                                                "\xEF\xBB\xBF# measured points, spreadsheet export\n"
                                                 "x,y,z,nx,ny,nz\n"
                                                 "# over the middle, facing up\n"
                                                 "2,1,2\n"
@@ -150,6 +157,7 @@ INSTANTIATE_TEST_SUITE_P(
                 "--daylight-factor needs --store irradiance"},
         Refused{"csv_with_two_numbers", "--sky uniform", "x,y,z\n1,2\n", "line 2: a sensor is x,y,z or x,y,z,nx,ny,nz"},
         Refused{"csv_with_a_word", "--sky uniform", "1,2,3\n1,two,3\n", "line 2: a sensor is"},
+        Refused{"csv_with_two_headers", "--sky uniform", "x,y,z\nX,Y,Z\n1,2,3\n", "line 2: a sensor is"},
         Refused{"csv_with_nan", "--sky uniform", "1,2,nan\n", "line 1: a sensor is"},
         Refused{"csv_with_a_zero_normal", "--sky uniform", "1,2,3,0,0,0\n", "line 1: the sensor's normal is zero"},
         Refused{"csv_empty", "--sky uniform", "# nothing\n", "holds no sensor"},
@@ -176,6 +184,51 @@ std::vector<std::vector<double>> classroom_readings(const std::string& case_name
                                         " --quiet --work-plane --work-plane-over floor " + sky);
   EXPECT_EQ(r.status, 0) << r.err;
   return r.status == 0 ? csv_rows(out + "/sensors.csv") : std::vector<std::vector<double>>{};
+}
+
+// At the defaults, the classroom's daylight factors against the path tracer's (issue 30): whole
+// paths from each point, 2^20 of them, sharing nothing with the sensors' sampling
+// (tests/fixtures/classroom_daylight_reference.csv, ./dev daylight-reference; 0.4% noise per point).
+// The issue asks RMS within 2% and every point within 6%. And the noise each reading states must
+// be honest: a point's error against the reference over both standard errors would scatter as a
+// standard normal deviate if they were all there is. They leave out the bake's own texel noise and
+// bias (shared by every batch of a point's rays), so the scatter is a little wider: measured RMS
+// 1.23 (mean 0.36). Above 1.5, the stated noise would hide a third of the error.
+TEST(ClassroomSample, DaylightFactorsAtTheDefaultsMatchThePathTracerWithinTheirStatedNoise) {
+  const auto rows = classroom_readings("against_reference", "--sky cie-overcast --daylight-factor");
+  std::stringstream in(test::slurp(fixture("classroom_daylight_reference.csv")));
+  std::vector<std::vector<double>> reference;
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#' || line[0] == 'x') continue;
+    std::vector<double> row;
+    std::stringstream cells(line);
+    for (std::string cell; std::getline(cells, cell, ',');) row.push_back(std::stod(cell));
+    reference.push_back(row);
+  }
+  ASSERT_EQ(rows.size(), 252u);
+  ASSERT_EQ(reference.size(), rows.size());
+  double squares = 0, worst = 0;
+  double squared_deviates = 0;
+  for (size_t k = 0; k < rows.size(); ++k) {
+    ASSERT_EQ(rows[k].size(), 10u);  // position, normal, lux, daylight factor, their standard errors
+    ASSERT_NEAR(rows[k][0], reference[k][0], 1e-4);
+    ASSERT_NEAR(rows[k][2], reference[k][2], 1e-4);
+    const double ours = rows[k][7], theirs = reference[k][7];
+    const double relative = ours / theirs - 1;
+    squares += relative * relative;
+    worst = std::max(worst, std::fabs(relative));
+    const double noise = std::hypot(rows[k][9], reference[k][9]);
+    EXPECT_GT(rows[k][9], 0) << "a reading states its noise";
+    squared_deviates += (ours - theirs) * (ours - theirs) / (noise * noise);
+  }
+  const double rms = std::sqrt(squares / double(rows.size()));
+  RecordProperty("daylight_factor_rms_percent", std::to_string(100 * rms));
+  RecordProperty("daylight_factor_worst_percent", std::to_string(100 * worst));
+  const double rms_deviate = std::sqrt(squared_deviates / double(rows.size()));
+  RecordProperty("rms_error_over_stated_noise", std::to_string(rms_deviate));
+  EXPECT_LT(rms, 0.02);
+  EXPECT_LT(worst, 0.06);
+  EXPECT_LT(rms_deviate, 1.5);
 }
 
 TEST(ClassroomSample, TheDaylightFactorFallsFromTheWindowsToTheBack) {

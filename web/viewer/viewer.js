@@ -103,13 +103,17 @@ function pageOf(gltf, json, material) {
   return json.extras.radbake.pages.findIndex((p) => p.texture === lightmap.index);
 }
 
-// The EXR pages' values (mean of R, G, B) at a texel, rows top first (EXRLoader puts the file's
-// last row first: a texture's origin is bottom-left).
+// What a light meter reads of linear RGB: the photopic (CIE 1931 Y) weights of sRGB's primaries,
+// as radbake's readings are (base/math.h).
+const PHOTOPIC = [0.2126, 0.7152, 0.0722];
+
+// The EXR pages' photopic value at a texel, rows top first (EXRLoader puts the file's last row
+// first: a texture's origin is bottom-left).
 function texelValue(page, x, y) {
   const { width, height, data } = page.image;
   const channels = data.length / (width * height);
   const i = ((height - 1 - y) * width + x) * channels;
-  return (data[i] + data[i + 1] + data[i + 2]) / 3;
+  return PHOTOPIC[0] * data[i] + PHOTOPIC[1] * data[i + 1] + PHOTOPIC[2] * data[i + 2];
 }
 
 // The automatic top of a false-colour scale: the 99th percentile of the covered texels, rounded up
@@ -160,7 +164,7 @@ const fragmentShader = `
   vec3 srgbToLinear(vec3 c) { return mix(c / 12.92, pow((c + 0.055) / 1.055, vec3(2.4)), step(0.04045, c)); }
   void main() {
     vec2 t = vec2(vUv1.x, 1.0 - vUv1.y);
-    float a = dot(texture2D(pageA, t).rgb, vec3(1.0 / 3.0));
+    float a = dot(texture2D(pageA, t).rgb, vec3(0.2126, 0.7152, 0.0722));  // photopic, as PHOTOPIC
     vec3 c;
     if (mode == 0) {
       c = vec3(a * displayScale);
@@ -169,8 +173,9 @@ const fragmentShader = `
       float f = logarithmic > 0.5 ? (log(max(v, 1e-30) / maxValue) / log(10.0) + decades) / decades : v / maxValue;
       c = srgbToLinear(turbo(clamp(f, 0.0, 1.0)));
     } else if (mode == 2) {
-      float b = dot(texture2D(pageB, t).rgb, vec3(1.0 / 3.0));
-      float s = clamp((b - a) / max(a, floorValue) / differenceScale, -1.0, 1.0);
+      // As radbake diff compares pages: the mean of R, G, B.
+      float ma = dot(texture2D(pageA, t).rgb, vec3(1.0 / 3.0)), b = dot(texture2D(pageB, t).rgb, vec3(1.0 / 3.0));
+      float s = clamp((b - ma) / max(ma, floorValue) / differenceScale, -1.0, 1.0);
       c = s > 0.0 ? mix(vec3(1.0), vec3(1.0, 0.0, 0.0), s) : mix(vec3(1.0), vec3(0.0, 0.0, 1.0), -s);
     } else {
       #ifdef VERTEX_LIGHT
@@ -327,7 +332,7 @@ const raycaster = new THREE.Raycaster();
 
 // What bake A holds at a point of the view (x right, y down, in CSS pixels: pixel (i, j) has its
 // centre at i + 0.5, j + 0.5): the surface, the page, the texel and the value in the bake's unit
-// (lux for irradiance), the mean of R, G, B. Null where no baked surface is.
+// (lux for irradiance), photopic. Null where no baked surface is.
 function pick(x, y) {
   const ndc = new THREE.Vector2((x / canvas.clientWidth) * 2 - 1, -(y / canvas.clientHeight) * 2 + 1);
   raycaster.setFromCamera(ndc, camera);

@@ -72,7 +72,7 @@ ShL2 path_traced_radiance_sh(Vec3 p, const Scene& scene, const Surface& surface,
   }
   Elements none;
   const std::vector<Rgb> irradiance =
-      path_trace_points(points, normals, none, surface, materials, scene.lights, nullptr, tracer, kPaths, 11);
+      path_trace_points(points, normals, none, surface, materials, scene.lights, nullptr, tracer, kPaths, 11).irradiance;
   ShL2 sh{};
   for (size_t k = 0; k < points.size(); ++k) {
     const auto y = sh_basis(directions[k]);
@@ -120,7 +120,7 @@ TEST(LightProbes, InTheCornellBoxTheyMatchThePathTracerForSixNormals) {
   Scene scene = loaded.scene;
   add_back_faces(scene);
   const Surface surface = build_surface(scene, b.atlas);
-  const MaterialSampler materials(scene, surface, options.emission_scale, options.glazing_transmittance);
+  const MaterialSampler materials(scene, surface, options.emission_scale, options.glazing);
   const RayTracer tracer(surface, &materials);
   const Vec3 axes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
   double worst = 0, worst_truncation = 0;
@@ -129,7 +129,8 @@ TEST(LightProbes, InTheCornellBoxTheyMatchThePathTracerForSixNormals) {
     const ShL2 reference = path_traced_radiance_sh(probe.position, scene, surface, materials, tracer);
     std::vector<Vec3> points(6, probe.position), normals(axes, axes + 6);
     const std::vector<Rgb> exact =
-        path_trace_points(points, normals, b.result.elements, surface, materials, scene.lights, nullptr, tracer, 16384, 7);
+        path_trace_points(points, normals, b.result.elements, surface, materials, scene.lights, nullptr, tracer, 16384, 7)
+            .irradiance;
     double scale = 0;  // the probe's mean reading over the six normals, lux
     for (Vec3 n : axes) scale += double(sum(probe_irradiance(reference, n))) / 18;
     for (Vec3 n : axes) {

@@ -77,6 +77,38 @@ TEST(Sensors, JustAboveAFloorTheyReadWhatTheFloorsTexelsReceive) {
   EXPECT_NEAR(r.sensor_lux[0], floor.x, 0.02 * floor.x);
 }
 
+// A meter reads the photopic part of coloured light (issue 30): a lamp of 100 cd whose colour is
+// pure red, green or blue in linear sRGB gives E = Y(colour) x I / d^2, Y = 0.2126, 0.7152,
+// 0.0722 (IEC 61966-2-1's primaries, CIE 1931 Y), not a third of it each. Over a black floor, so
+// only the lamp counts; the floor's own statistics read the same.
+TEST(Sensors, ColouredLightIsReadAsItsPhotopicLuminance) {
+  const Rgb colours[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  const double weight[3] = {0.2126, 0.7152, 0.0722};
+  for (int c = 0; c < 3; ++c) {
+    Scene scene;
+    const int black = test::add_material(scene, {0, 0, 0});
+    test::add_quad(scene, {0, 0, 2}, {2, 0, 0}, {0, 0, -2}, black, "floor");
+    Light lamp;
+    lamp.intensity = 100;
+    lamp.color = colours[c];
+    lamp.position = {1, 2, 1};
+    scene.lights.push_back(lamp);
+    BakeOptions options;
+    options.sensors = {{{1, 0.5f, 1}, {0, 1, 0}}};
+    const BakeResult r = test::bake_scene(scene, test::coarse_atlas(), options).result;
+    ASSERT_EQ(r.sensor_lux.size(), 1u);
+    // 1.5 m under it: 100 / 1.5^2 = 44.4 lx of white light. 1e-5 bounds float rounding (one
+    // shadow ray, nothing in the way).
+    const double expected = weight[c] * 100 / (1.5 * 1.5);
+    EXPECT_NEAR(r.sensor_lux[0], expected, 1e-5 * expected) << "colour " << c;
+    // The floor, 2 m under it: its mean over the 2 m square is below I / d^2 at the centre, and
+    // at least Y x what its corners get (I h / r^3, r = 2.45 m), as it is a photopic reading too.
+    ASSERT_EQ(r.report.surfaces.size(), 1u);
+    EXPECT_LT(r.report.surfaces[0].mean, weight[c] * 100 / 4.0);
+    EXPECT_GT(r.report.surfaces[0].mean, weight[c] * 100 * 2 / std::pow(std::sqrt(6.0), 3));
+  }
+}
+
 TEST(SurfaceStatistics, PerInstanceAreaMeanAndUniformity) {
   Scene scene;
   const int grey = test::add_material(scene, {0.5f, 0.5f, 0.5f});

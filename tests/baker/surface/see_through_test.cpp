@@ -13,8 +13,11 @@ namespace {
 
 constexpr float kSkyLuminance = 1000;  // cd/m2, uniform: an open horizontal plane gets pi L
 
+// The transport through panes, measured against the Fresnel pane's curve (the glazing models
+// themselves: glazing_test.cpp).
 BakeOptions under_uniform_sky() {
   BakeOptions options;
+  options.glazing.model = GlazingModel::Fresnel;
   options.sky.enabled = true;
   options.sky.distribution.model = SkyModel::Uniform;
   options.sky.zenith_luminance = kSkyLuminance;
@@ -111,7 +114,7 @@ TEST(SeeThrough, AClearPaneLosesWhatItsTwoFacesReflect) {
   expect_floor_lux(floor_in_a_glass_box(1, -1), under_uniform_sky(), 0.96 / 1.04);
   // --glazing-transmittance: the same for every glazing without a value of its own.
   BakeOptions options = under_uniform_sky();
-  options.glazing_transmittance = 0.6f;
+  options.glazing.transmittance = 0.6f;
   expect_floor_lux(floor_in_a_glass_box(1, -1), options, 0.6);
   expect_floor_lux(floor_in_a_glass_box(1, 0.7f), options, 0.7);  // its own wins
 }
