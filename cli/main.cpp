@@ -393,6 +393,9 @@ int run_bake(const radbake::BakeCommand& cmd, radbake::Team& team) {
     print_readings("sensors", run.analysis.sensors, run.analysis.sensors_daylight_factor);
     print_readings("work plane", run.analysis.work_plane, run.analysis.work_plane_daylight_factor);
     print_storeys(run.analysis);
+    if (result.report.sky_noise > 0)
+      std::fprintf(stderr, "radbake: texels' sky light: noise under %.2g%% (RMS standard error over the mean, "
+                           "overstated; --sky-rays or --quality production for less)\n", 100 * result.report.sky_noise);
   }
   char balance[64] = "energy balance not measured";
   if (result.report.balance.measured)

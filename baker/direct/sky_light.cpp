@@ -16,40 +16,68 @@ double sun_disc_seen(const SkyView& view, const RayTracer& tracer, Vec3 origin, 
   return seen / rays;
 }
 
+SkyRaySet::SkyRaySet(const SkyPortals* portals, uint32_t count)
+    : portals_(portals && !portals->empty() && count >= 2 ? portals : nullptr),
+      count_(std::max<uint32_t>(1, count)),
+      cosine_(portals_ ? count_ / 2 : count_) {}
+
+Vec3 SkyRaySet::direction(uint32_t k, Vec3 n, Vec3 ng, Vec3 origin, uint32_t pattern) const {
+  if (k < cosine_) return hemisphere_direction(n, ng, cmj_sample(k, cosine_, pattern));
+  // The aimed rays' own stratification, apart from the cosine-distributed ones'.
+  return portals_->aim(origin, cmj_sample(k - cosine_, count_ - cosine_, pattern ^ 0x9e3779b9u));
+}
+
+double SkyRaySet::lux_per_luminance(Vec3 d, Vec3 n, Vec3 ng, Vec3 origin) const {
+  if (!portals_) return M_PI / count_;
+  const double c = double(dot(n, d));
+  if (!(c > 0) || !(dot(ng, d) > 0)) return 0;
+  return c / (double(cosine_) * c / M_PI + double(count_ - cosine_) * portals_->density(origin, d));
+}
+
 namespace {
 
-// A point's sky rays: cosine-distributed over its hemisphere, and shadow rays to the sun's disc.
+// A point's sky rays: batches of a SkyRaySet, and shadow rays to the sun's disc.
 struct SkyRays {
   SkyView view;
   const RayTracer& tracer;
-  uint32_t rays, sun_rays;
+  const SkyPortals& portals;
+  uint32_t sun_rays;
 
-  SkyRays(const SkyLight& s, const RayTracer& t)
-      : view(s), tracer(t), rays(std::max<uint32_t>(1, s.rays)), sun_rays(std::max<uint32_t>(1, s.sun_rays)) {}
+  SkyRays(const SkyLight& s, const RayTracer& t, const SkyPortals& p)
+      : view(s), tracer(t), portals(p), sun_rays(std::max<uint32_t>(1, s.sun_rays)) {}
 
-  // Lux on a surface of shading normal n and geometric normal ng, rays from origin_of(u) for a
-  // stratified u in the unit square (a point of a texel's footprint, or one point).
-  // With `from`, also where the light comes from (light_direction.h; grey).
+  // Lux from the sky and the ground by one batch of `count` rays from origin_of(u) for a
+  // stratified u in the unit square (a point of a texel's footprint, or one point); with `from`,
+  // adds where it comes from (light_direction.h), lux per batch; with `interleaved`, adds ray k's
+  // share to interleaved[k % kSensorBatches].
   template <class OriginOf>
-  double lux(Vec3 n, Vec3 ng, const OriginOf& origin_of, Rng& rng, Vec3* from = nullptr) const {
-    const SkyRayPatterns pattern(rng);
-    double luminance = 0;  // cd/m2, summed over the rays
-    Vec3 sky_from{}, sun_from{};
-    for (uint32_t k = 0; k < rays; ++k) {
-      const Vec3 origin = origin_of(cmj_sample(k, rays, pattern.origin));
-      const Vec3 d = hemisphere_direction(n, ng, cmj_sample(k, rays, pattern.direction));
+  double batch(Vec3 n, Vec3 ng, const OriginOf& origin_of, uint32_t count, uint32_t origin_pattern,
+               uint32_t direction_pattern, bool aim, Vec3* from, double* interleaved = nullptr) const {
+    const SkyRaySet set(aim ? &portals : nullptr, count);
+    double lux = 0;
+    for (uint32_t k = 0; k < count; ++k) {
+      const Vec3 origin = origin_of(cmj_sample(k, count, origin_pattern));
+      const Vec3 d = set.direction(k, n, ng, origin, direction_pattern);
+      if (!(dot(ng, d) > 0)) continue;
+      // Traced first: most rays from a room's surfaces strike another, and only those that reach
+      // the sky need their weight (a sum over the glazing).
       const float passes = tracer.transmittance(origin, d, 0.0f, INFINITY);
-      if (passes > 0) {
-        const double seen = passes * view.luminance(d);
-        luminance += seen;
-        if (from) sky_from += d * float(seen);
-      }
+      if (!(passes > 0)) continue;
+      const double seen = set.lux_per_luminance(d, n, ng, origin) * passes * view.luminance(d);
+      lux += seen;
+      if (from) *from += d * float(seen);
+      if (interleaved) interleaved[k % kSensorBatches] += seen;
     }
-    // Cosine-distributed directions: E = pi * (mean luminance seen).
-    double lux = M_PI * luminance / rays;
-    if (from) *from = sky_from * float(M_PI / rays);
-    if (!view.sun_up()) return lux;
-    double seen = 0;  // cos(incidence) over the disc's points that are not hidden
+    return lux;
+  }
+
+  // Lux from the sun's disc on a surface of shading normal n and geometric normal ng: its points
+  // not hidden, by cos(incidence).
+  template <class OriginOf>
+  double sun(Vec3 n, Vec3 ng, const OriginOf& origin_of, const SkyRayPatterns& pattern, Vec3* from) const {
+    if (!view.sun_up()) return 0;
+    double seen = 0;
+    Vec3 sun_from{};
     for (uint32_t k = 0; k < sun_rays; ++k) {
       const Vec3 origin = origin_of(cmj_sample(k, sun_rays, pattern.sun_origin));
       const Vec3 d = view.toward_sun(cmj_sample(k, sun_rays, pattern.sun_disc));
@@ -57,34 +85,47 @@ struct SkyRays {
       if (incidence > 0 && dot(ng, d) > 0) {
         const double part = incidence * tracer.transmittance(origin, d, 0.0f, INFINITY);
         seen += part;
-        if (from) sun_from += d * float(part);
+        sun_from += d * float(part);
       }
     }
     if (from) *from += sun_from * float(view.sky().sun_illuminance / sun_rays);
-    return lux + view.sky().sun_illuminance * seen / sun_rays;
+    return view.sky().sun_illuminance * seen / sun_rays;
   }
 };
 
 }  // namespace
 
 std::vector<Rgb> sky_irradiance(const Elements& e, const Surface& surface, const RayTracer& tracer,
-                                const SkyLight& sky, uint64_t seed, Progress& progress, ElementRange range,
-                                std::vector<LightDirection>* directions) {
+                                const SkyLight& sky, const SkyPortals& portals, uint64_t seed, Progress& progress,
+                                ElementRange range, std::vector<LightDirection>* directions,
+                                std::vector<float>* standard_error) {
   range = range.within(e.size());
   std::vector<Rgb> irradiance(range.size());
   if (directions) directions->assign(range.size(), {});
-  const SkyRays rays(sky, tracer);
+  if (standard_error) standard_error->assign(range.size(), 0.0f);
+  const SkyRays rays(sky, tracer, portals);
   progress.begin("sky", range.size());
   tbb::parallel_for(tbb::blocked_range<size_t>(range.begin, range.end, 64), [&](const tbb::blocked_range<size_t>& r) {
     for (size_t i = r.begin(); i < r.end(); ++i) {
       if (!e.valid(i)) continue;
       const Vec3 ng = surface.normal[e.triangle[i]];
       Rng rng(seed, Stream::Sky, i);
+      const SkyRayPatterns pattern(rng);
+      auto origin_of = [&](Vec2 u) { return footprint_point(e, surface, i, u) + ng * e.offset[i]; };
       Vec3 from{};
-      const float lux = float(rays.lux(e.normal[i], ng, [&](Vec2 u) {
-        return footprint_point(e, surface, i, u) + ng * e.offset[i];
-      }, rng, directions ? &from : nullptr));
+      const bool aim = portals.any_in_front(e.position[i], ng);
+      // One stratified set of all the rays, which is worth far more than independent batches of
+      // them; its noise is stated from its interleaved eighths (rays k, k + 8, ...), each a
+      // coarser stratified set: their spread over sqrt(8) overstates the whole set's error.
+      double eighths[kSensorBatches] = {};
+      const double mean = rays.batch(e.normal[i], ng, origin_of, std::max<uint32_t>(1, sky.rays), pattern.origin,
+                                     pattern.direction, aim, directions ? &from : nullptr, eighths);
+      double squares = 0;
+      for (double part : eighths) squares += (part * kSensorBatches - mean) * (part * kSensorBatches - mean);
+      const double error = std::sqrt(squares / (kSensorBatches - 1) / kSensorBatches);
+      const float lux = float(mean + rays.sun(e.normal[i], ng, origin_of, pattern, directions ? &from : nullptr));
       irradiance[i - range.begin] = Rgb{lux, lux, lux};
+      if (standard_error) (*standard_error)[i - range.begin] = float(error);
       if (directions) (*directions)[i - range.begin] = {Rgb{1, 1, 1} * from.x, Rgb{1, 1, 1} * from.y, Rgb{1, 1, 1} * from.z};
     }
     progress.advance(r.size());
@@ -94,32 +135,21 @@ std::vector<Rgb> sky_irradiance(const Elements& e, const Surface& surface, const
 }
 
 std::vector<SensorBatches> sky_illuminance_at(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
-                                              const RayTracer& tracer, const SkyLight& sky, uint32_t rays, uint64_t seed) {
+                                              const RayTracer& tracer, const SkyLight& sky, const SkyPortals& portals,
+                                              uint32_t rays, uint64_t seed) {
   std::vector<SensorBatches> lux(points.size());
-  const SkyView view(sky);
-  const uint32_t per_batch = rays_per_batch(rays), sun_rays = std::max<uint32_t>(1, sky.sun_rays);
+  const SkyRays cast(sky, tracer, portals);
+  const uint32_t per_batch = rays_per_batch(rays);
   tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size(), 4), [&](const tbb::blocked_range<size_t>& r) {
     for (size_t i = r.begin(); i < r.end(); ++i) {
       Rng rng(seed, Stream::SensorSky, i);
       const SensorRayPatterns pattern(rng);
       const Vec3 n = normals[i];
-      double sun = 0;  // lux: cos(incidence) over the disc's points that are not hidden
-      if (view.sun_up()) {
-        for (uint32_t k = 0; k < sun_rays; ++k) {
-          const Vec3 d = view.toward_sun(cmj_sample(k, sun_rays, pattern.sky.sun_disc));
-          if (dot(n, d) > 0) sun += dot(n, d) * tracer.transmittance(points[i], d, 0.0f, INFINITY);
-        }
-        sun *= sky.sun_illuminance / sun_rays;
-      }
-      for (uint32_t b = 0; b < kSensorBatches; ++b) {
-        double luminance = 0;  // cd/m2, summed over the batch's cosine-distributed rays
-        for (uint32_t k = 0; k < per_batch; ++k) {
-          const Vec3 d = hemisphere_direction(n, n, cmj_sample(k, per_batch, pattern.batch[b]));
-          const float passes = tracer.transmittance(points[i], d, 0.0f, INFINITY);
-          if (passes > 0) luminance += passes * view.luminance(d);
-        }
-        lux[i][b] = M_PI * luminance / per_batch + sun;
-      }
+      auto at_point = [&](Vec2) { return points[i]; };
+      const double sun = cast.sun(n, n, at_point, pattern.sky, nullptr);
+      const bool aim = portals.any_in_front(points[i], n);
+      for (uint32_t b = 0; b < kSensorBatches; ++b)
+        lux[i][b] = cast.batch(n, n, at_point, per_batch, 0, pattern.batch[b], aim, nullptr) + sun;
     }
   });
   return lux;

@@ -62,19 +62,22 @@ struct DirectSky {
 };
 
 DirectSky direct_sky(const Sensor& s, size_t index, const SkyPatches& fine, const Compass& compass,
-                     const Surface& surface, const RayTracer& tracer, uint32_t rays, uint64_t seed) {
+                     const Surface& surface, const RayTracer& tracer, const SkyPortals& portals, uint32_t rays,
+                     uint64_t seed) {
   const Vec3 origin = sensor_origin(s.position, s.normal, surface.scene_extent);
   Rng rng(seed, Stream::SensorSky, index);
   const SensorRayPatterns pattern(rng);
   std::map<uint32_t, float> seen;
   DirectSky out;
-  const uint32_t per_batch = rays_per_batch(rays);
+  const SkyRaySet set(portals.any_in_front(origin, s.normal) ? &portals : nullptr, rays_per_batch(rays));
   for (uint32_t b = 0; b < kSensorBatches; ++b)
-    for (uint32_t k = 0; k < per_batch; ++k) {
-      const Vec3 d = hemisphere_direction(s.normal, s.normal, cmj_sample(k, per_batch, pattern.batch[b]));
+    for (uint32_t k = 0; k < rays_per_batch(rays); ++k) {
+      const Vec3 d = set.direction(k, s.normal, s.normal, origin, pattern.batch[b]);
+      const double weight = set.lux_per_luminance(d, s.normal, s.normal, origin);
+      if (!(weight > 0)) continue;
       const float passes = tracer.transmittance(origin, d, 0.0f, INFINITY);
       if (!(passes > 0)) continue;
-      const float lux_per_luminance = float(M_PI) * passes / float(per_batch * kSensorBatches);
+      const float lux_per_luminance = float(weight * passes / kSensorBatches);
       if (dot(d, compass.up) > 0) seen[uint32_t(compass.patch(fine, d))] += lux_per_luminance;
       else out.ground += lux_per_luminance;
     }
@@ -160,6 +163,7 @@ AnnualDaylight annual_daylight(const Scene& scene, const Atlas& atlas, const Bak
   BakeGeometry geometry = bake_geometry(scene, atlas, options, plan_effects(scene, plan_options), progress, times);
   const Surface& surface = *geometry.surface;
   const RayTracer& tracer = *geometry.tracer;
+  const SkyPortals portals(surface, *geometry.materials);
   const Elements& e = geometry.elements;
   AnnualDaylight out;
   out.sensors = options.sensors;
@@ -230,7 +234,7 @@ AnnualDaylight annual_daylight(const Scene& scene, const Atlas& atlas, const Bak
   tbb::parallel_for(tbb::blocked_range<size_t>(0, sensors.size(), 4), [&](const tbb::blocked_range<size_t>& r) {
     for (size_t s = r.begin(); s < r.end(); ++s) {
       hits[s] = sensor_gather_hits(sensors[s], s, e, surface, tracer, options.sensor.rays, seed).elements;
-      seen_sky[s] = direct_sky(sensors[s], s, fine, compass, surface, tracer, options.sensor.sky_rays, seed);
+      seen_sky[s] = direct_sky(sensors[s], s, fine, compass, surface, tracer, portals, options.sensor.sky_rays, seed);
     }
   });
 

@@ -5,6 +5,7 @@
 #include <tbb/global_control.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -86,7 +87,8 @@ std::vector<size_t> texel_chunk_starts(const Elements& elements, bool by_page) {
 std::vector<Rgb> shared_direct_light(const Scene& scene, const Elements& elements, const Surface& surface,
                                      const MaterialSampler& materials, const RayTracer& tracer,
                                      const BakeOptions& options, const EffectPlan& plan, Progress& progress,
-                                     double& delivered_power, std::vector<LightDirection>& directions) {
+                                     double& delivered_power, std::vector<LightDirection>& directions,
+                                     double& sky_noise) {
   DirectLightOptions direct = options.direct;
   direct.shadow_rays = plan.shadow_rays;
   direct.cull_unlit = !plan.exhaustive;
@@ -97,6 +99,9 @@ std::vector<Rgb> shared_direct_light(const Scene& scene, const Elements& element
   const bool directional = options.directional != Directional::None;
   if (directional) directions.assign(n, {});
   std::vector<double> delivered(starts.size() - 1, 0.0);
+  // Per chunk, over its valid elements: area, sky irradiance x area, its standard error^2 x area.
+  std::vector<std::array<double, 3>> sky_spread(starts.size() - 1, {0, 0, 0});
+  const SkyPortals portals = options.sky.enabled ? SkyPortals(surface, materials) : SkyPortals();
   SharedStage stage;
   stage.name = "direct light";
   stage.chunks = starts.size() - 1;
@@ -107,10 +112,18 @@ std::vector<Rgb> shared_direct_light(const Scene& scene, const Elements& element
     std::vector<LightDirection> from_lights, from_sky, from;
     std::vector<Rgb> lights_and_sky = punctual_irradiance(elements, surface, scene.lights, tracer, direct, options.seed,
                                                           quiet, range, directional ? &from_lights : nullptr);
+    std::array<double, 3> spread{0, 0, 0};
     if (options.sky.enabled) {
-      const std::vector<Rgb> sky = sky_irradiance(elements, surface, tracer, options.sky, options.seed, quiet, range,
-                                                  directional ? &from_sky : nullptr);
-      for (size_t k = 0; k < range.size(); ++k) lights_and_sky[k] += sky[k];
+      std::vector<float> error;
+      const std::vector<Rgb> sky = sky_irradiance(elements, surface, tracer, options.sky, portals, options.seed, quiet,
+                                                  range, directional ? &from_sky : nullptr, &error);
+      for (size_t k = 0; k < range.size(); ++k) {
+        lights_and_sky[k] += sky[k];
+        const size_t i = range.begin + k;
+        if (!elements.valid(i)) continue;
+        const double a = elements.area[i];
+        spread[0] += a, spread[1] += double(sky[k].x) * a, spread[2] += double(error[k]) * error[k] * a;
+      }
     }
     std::vector<Rgb> total = emitter_irradiance(elements, surface, materials, tracer, direct, options.seed, quiet, range,
                                                 directional ? &from : nullptr);
@@ -127,6 +140,7 @@ std::vector<Rgb> shared_direct_light(const Scene& scene, const Elements& element
     }
     ByteWriter out;
     out.put(power);
+    for (double v : spread) out.put(v);
     out.put_vector(total);
     out.put_vector(from);
     return out.bytes();
@@ -134,6 +148,7 @@ std::vector<Rgb> shared_direct_light(const Scene& scene, const Elements& element
   stage.take = [&](size_t chunk, const Bytes& result) {
     ByteReader in(result);
     delivered[chunk] = in.get<double>();
+    for (double& v : sky_spread[chunk]) v = in.get<double>();
     const std::vector<Rgb> values = in.get_vector<Rgb>();
     const std::vector<LightDirection> from = in.get_vector<LightDirection>();
     const size_t count = starts[chunk + 1] - starts[chunk];
@@ -144,6 +159,10 @@ std::vector<Rgb> shared_direct_light(const Scene& scene, const Elements& element
   run_shared_stage(stage, *options.sharing.team, options.sharing.store, options.sharing.resume, tracer, progress);
   delivered_power = 0;
   for (double d : delivered) delivered_power += d;
+  std::array<double, 3> spread{0, 0, 0};
+  for (const auto& s : sky_spread)
+    for (int k = 0; k < 3; ++k) spread[size_t(k)] += s[size_t(k)];
+  sky_noise = spread[1] > 0 ? std::sqrt(spread[2] / spread[0]) / (spread[1] / spread[0]) : 0.0;
   return irradiance;
 }
 
@@ -355,7 +374,7 @@ void compute_radiosity(const Scene& scene, const Elements& elements, const Surfa
   double delivered_power = 0;
   result.direct = clock.run("direct light", [&] {
     return shared_direct_light(scene, elements, surface, materials, tracer, options, plan, progress, delivered_power,
-                               result.light_directions);
+                               result.light_directions, result.report.sky_noise);
   });
   check_element_values("direct light", result.direct, checked);
   if (options.sharing.stop_after == StopAfter::DirectLight) throw StoppedEarly("direct light");
@@ -500,7 +519,8 @@ BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& given
     SensorReadings readings = clock.run("sensors", [&] {
       if (options.method != Method::PathTrace)
         return sensor_illuminance(result.sensors, scene.lights, elements, exitance, surface, *tracer, options.sky,
-                                  options.sensor, options.seed, progress);
+                                  options.sky.enabled ? SkyPortals(surface, materials) : SkyPortals(), options.sensor,
+                                  options.seed, progress);
       // The reference: whole paths from each sensor, as many as its sky rays, sharing nothing
       // with the sensors' own sampling.
       std::vector<Vec3> points, normals;

@@ -48,6 +48,9 @@ struct BakeReport {
   // Method::PathTrace: paths per texel, and the noise estimate (PathTraced::relative_noise).
   uint32_t path_samples = 0;
   double path_relative_noise = 0;
+  // The texels' sky noise: the RMS of their sky irradiance's standard errors over its mean, area
+  // weighted (sky_light.h); 0 without a sky.
+  double sky_noise = 0;
   double path_mean_vertices = 0;
   std::vector<SurfaceStatistics> surfaces;  // per instance, lux
   std::vector<std::string> warnings;

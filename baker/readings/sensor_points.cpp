@@ -33,13 +33,13 @@ SensorHits sensor_gather_hits(const Sensor& s, size_t index, const Elements& ele
 
 SensorReadings sensor_illuminance(const std::vector<Sensor>& sensors, const std::vector<Light>& lights,
                                   const Elements& elements, const std::vector<Rgb>& exitance, const Surface& surface,
-                                  const RayTracer& tracer, const SkyLight& sky, const SensorOptions& options,
-                                  uint64_t seed, Progress& progress) {
+                                  const RayTracer& tracer, const SkyLight& sky, const SkyPortals& portals,
+                                  const SensorOptions& options, uint64_t seed, Progress& progress) {
   std::vector<SensorBatches> batches(sensors.size(), SensorBatches{});
   if (sky.enabled) {
     std::vector<Vec3> points, normals;
     for (const Sensor& s : sensors) points.push_back(sensor_origin(s.position, s.normal, surface.scene_extent)), normals.push_back(s.normal);
-    batches = sky_illuminance_at(points, normals, tracer, sky, options.sky_rays, seed);
+    batches = sky_illuminance_at(points, normals, tracer, sky, portals, options.sky_rays, seed);
   }
   const uint32_t per_batch = rays_per_batch(options.rays);
   SensorReadings out;

@@ -51,7 +51,7 @@ struct SensorReadings {
 };
 SensorReadings sensor_illuminance(const std::vector<Sensor>& sensors, const std::vector<Light>& lights,
                                   const Elements& elements, const std::vector<Rgb>& exitance, const Surface& surface,
-                                  const RayTracer& tracer, const SkyLight& sky, const SensorOptions& options,
-                                  uint64_t seed, Progress& progress);
+                                  const RayTracer& tracer, const SkyLight& sky, const SkyPortals& portals,
+                                  const SensorOptions& options, uint64_t seed, Progress& progress);
 
 }  // namespace radbake

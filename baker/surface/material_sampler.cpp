@@ -245,6 +245,11 @@ bool MaterialSampler::see_through(uint32_t triangle) const {
   return mi >= 0 && (scene_.materials[size_t(mi)].alpha_mode != AlphaMode::Opaque || pane_transmittance_[size_t(mi)] > 0);
 }
 
+bool MaterialSampler::glazing(uint32_t triangle) const {
+  const int mi = surface_.material[triangle];
+  return mi >= 0 && pane_transmittance_[size_t(mi)] > 0;
+}
+
 bool MaterialSampler::is_uniform(uint32_t triangle) const {
   int mi = surface_.material[triangle];
   if (!scene_.instances[surface_.instance[triangle]].colors.empty()) return false;

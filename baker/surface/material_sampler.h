@@ -48,6 +48,8 @@ class MaterialSampler {
   float diffuse_transmittance(uint32_t triangle, Vec2 bary) const;
   // False for the triangles every ray stops at (opaque and no glazing): most of them.
   bool see_through(uint32_t triangle) const;
+  // True for glazing: a material whose KHR_materials_transmission passes some light.
+  bool glazing(uint32_t triangle) const;
 
   // The shading normal at a point, the material's normal map applied (tangents from the map's
   // texture coordinates, as viewers derive them for a mesh without TANGENT); the interpolated

@@ -191,6 +191,12 @@ void write_report(const std::string& path, const RunInfo& run, const Scene& scen
                      {"png_intensity", lightmaps.png_scale}}},
       {"display", display},
       {"daylight", daylight_json(run.daylight)},
+      {"sky_noise", bake.sky_noise > 0 ? json{{"texels_rms_standard_error_over_mean", bake.sky_noise},
+                                              {"note", "the texels' sky irradiance: the RMS of their standard "
+                                                       "errors over its mean, area weighted, each estimated from "
+                                                       "the spread of its sky rays' interleaved eighths, which "
+                                                       "overstates it; the gather's noise comes on top"}}
+                                       : json(nullptr)},
       {"sensors", readings_json(run.analysis.sensors, run.analysis.sensors_daylight_factor)},
       {"work_plane", work_plane_json(run.analysis)},
       {"views", views_json(run.analysis.views)},

@@ -90,14 +90,19 @@ TEST(ChartPacking, TheStripsOfAThinRodJoinIntoOneChartWithoutStretch) {
 // a tenth of a texel: it hinges onto the wall across the fold, one chart, unfolded without
 // stretch. A 30 cm lip is three texels, which a texel can tell apart from the wall: the fold
 // stays a seam, two charts.
-Atlas wall_with_lip(float lip) {
+// One grey mesh, unwrapped at 10 texels/m.
+Atlas unwrap_at_ten_texels_a_metre(std::vector<Vec3> positions, std::vector<uint32_t> triangles) {
   Scene scene;
   const int m = test::add_material(scene, {0.5f, 0.5f, 0.5f});
-  test::add_mesh(scene, {{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}, {2, 2, lip}, {0, 2, lip}},
-                 {0, 1, 2, 0, 2, 3, 3, 2, 4, 3, 4, 5}, m, "wall");
+  test::add_mesh(scene, std::move(positions), std::move(triangles), m);
   AtlasOptions options;
   options.texel_density = 10;
   return test::unwrap(scene, options);
+}
+
+Atlas wall_with_lip(float lip) {
+  return unwrap_at_ten_texels_a_metre({{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}, {2, 2, lip}, {0, 2, lip}},
+                                      {0, 1, 2, 0, 2, 3, 3, 2, 4, 3, 4, 5});
 }
 
 TEST(ChartPacking, APieceThinnerThanATexelHingesOntoItsNeighbourAcrossAFold) {
@@ -116,14 +121,10 @@ TEST(ChartPacking, APieceThinnerThanATexelHingesOntoItsNeighbourAcrossAFold) {
 // Touching, it joins the floor's chart, side by side as in the room; 1 cm apart, it does not
 // touch and keeps its own chart.
 Atlas floor_and_strip(float gap) {
-  Scene scene;
-  const int m = test::add_material(scene, {0.5f, 0.5f, 0.5f});
   const float y = 2 + gap;
-  test::add_mesh(scene, {{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}, {0.5f, y, 0}, {1.5f, y, 0}, {1.5f, y + 0.2f, 0}, {0.5f, y + 0.2f, 0}},
-                 {0, 1, 2, 0, 2, 3, 4, 5, 6, 4, 6, 7}, m, "floor");
-  AtlasOptions options;
-  options.texel_density = 10;
-  return test::unwrap(scene, options);
+  return unwrap_at_ten_texels_a_metre(
+      {{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}, {0.5f, y, 0}, {1.5f, y, 0}, {1.5f, y + 0.2f, 0}, {0.5f, y + 0.2f, 0}},
+      {0, 1, 2, 0, 2, 3, 4, 5, 6, 4, 6, 7});
 }
 
 TEST(ChartPacking, APieceTouchingAChartWithoutSharingVerticesJoinsIt) {

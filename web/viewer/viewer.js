@@ -247,6 +247,9 @@ function applyMode() {
   const sensors = state.a.sensors;
   u.maxValue.value = typed > 0 ? typed
     : mode === 'sensors' ? niceNumberAtOrAbove(Math.max(...sensors.lux))
+    // A daylight factor is at most 100% (a surface in the open); the texels' noise can put the
+    // 99th percentile a little above it, which rounding would make 200.
+    : daylight ? Math.min(100, automaticMax(state.a.pages, u.valueScale.value))
     : automaticMax(state.a.pages, u.valueScale.value);
   if (sensors) {
     sensors.points.visible = mode === 'sensors';

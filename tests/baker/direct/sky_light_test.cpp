@@ -6,6 +6,8 @@
 #include <functional>
 
 #include "base/errors.h"
+#include "baker/pipeline/quality_presets.h"
+#include "io/gltf/gltf_loader.h"
 #include "support/scene_builders.h"
 
 namespace radbake {
@@ -161,6 +163,42 @@ SkyLight sun_only(double zenith_degrees, double normal_lux) {
   sky.sun_illuminance = normal_lux;
   sky.sun_rays = 64;
   return sky;
+}
+
+// The classroom's floor under the CIE overcast sky, baked twice with different seeds: each texel's
+// difference over sqrt(2) is one bake's noise, RMS over the floor relative to its mean. Issue 30
+// asks under 3% for a heat map. Rays aimed at the windows (sky_portals.h) took the defaults' from
+// 11.2% to 5.3%; `--quality production` (1,024 sky rays a texel) measures 2.2%. Each bake states
+// its texels' sky noise (report.json).
+TEST(SkyLight, TheClassroomFloorsTexelsAreQuietEnoughForAHeatMapAtProductionAndSaySo) {
+  Scene scene = load_gltf(test::source_path("samples/classroom/classroom.gltf")).scene;
+  BakeOptions options;
+  apply_quality_preset("production", options);
+  options.sky.enabled = true;
+  options.sky.distribution.model = SkyModel::CieOvercast;
+  options.sky.zenith_luminance = 1000;
+  const BakeResult a = test::bake_scene(scene, AtlasOptions{}, options).result;
+  options.seed = 2;
+  const BakeResult b = test::bake_scene(scene, AtlasOptions{}, options).result;
+  ASSERT_EQ(a.elements.size(), b.elements.size());
+  double squares = 0, level = 0;
+  size_t n = 0;
+  for (size_t i = 0; i < a.elements.size(); ++i) {
+    if (!a.elements.valid(i) || !(a.elements.normal[i].y > 0.9f) || !(a.elements.position[i].y < 0.01f)) continue;
+    const double x = photopic(a.irradiance[i]), y = photopic(b.irradiance[i]);
+    squares += (x - y) * (x - y) / 2;
+    level += x;
+    ++n;
+  }
+  ASSERT_GT(n, 5000u);
+  level /= double(n);
+  const double noise = std::sqrt(squares / double(n)) / level;
+  RecordProperty("floor_noise_percent_of_mean", std::to_string(100 * noise));
+  RecordProperty("stated_sky_noise_percent", std::to_string(100 * a.report.sky_noise));
+  EXPECT_LT(noise, 0.03);
+  // Stated from each texel's interleaved eighths, it overstates (measured 5.4% to the floor's 2.2%),
+  // and must not understate.
+  EXPECT_GT(a.report.sky_noise, noise);
 }
 
 TEST(SkyLight, TheSunOnAnOpenFloorGivesItsNormalIlluminanceTimesCosine) {

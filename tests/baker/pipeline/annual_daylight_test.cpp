@@ -76,11 +76,14 @@ TEST(AnnualDaylight, CoefficientsMatchSingleHourBakesAtEverySensor) {
   const double median = errors[errors.size() / 2], p90 = errors[errors.size() * 9 / 10];
   RecordProperty("texels: mean ratio, median and p90 relative difference",
                  std::to_string(ours / theirs) + " " + std::to_string(median) + " " + std::to_string(p90));
-  // Measured: 0.996, median 2.3%, 90th percentile 14% (texels along shadow edges, which the sun
-  // bin's centre moves by up to 2 degrees).
+  // Measured: 0.999, median 4.5%, 90th percentile 22%: texels along shadow edges, which the sun
+  // bins blur (interpolated between up to 4 bins' centres, up to 2 degrees apart), and each side's
+  // own noise. Since issue 30 a single bake's texels aim half their sky rays at the windows, so
+  // the two no longer cast the same rays and their noise no longer cancels here (with the bin the
+  // sun falls in, as before, 4.4% and 20%; before issue 30, sharing rays, 2.3% and 14%).
   EXPECT_NEAR(ours / theirs, 1.0, 0.02);  // the scene's light over all lit texels
-  EXPECT_LT(median, 0.05);
-  EXPECT_LT(p90, 0.20);
+  EXPECT_LT(median, 0.06);
+  EXPECT_LT(p90, 0.25);
 }
 
 // A 4 x 3 x 4 m room of grey walls lit by a 1 m roof light (an opening in the middle of the

@@ -96,8 +96,11 @@ void expect_floor_lux(const Scene& scene, const BakeOptions& options, double nor
     ++texels;
   }
   ::testing::Test::RecordProperty("worst_relative_error", std::to_string(worst));
-  // 0.5% bounds 1,024 stratified sky rays' sampling of the pane's fall-off toward grazing.
-  EXPECT_LT(worst, 0.005);
+  // 1.5% bounds 1,024 sky rays' sampling of the pane's fall-off toward grazing: half of them aimed
+  // at the panes by their area (sky_portals.h), which from near a wall see it edge-on. Measured
+  // 1.0%; 0.31% with 8,192 rays, so noise, not bias (0.39% when all were cosine-distributed, which
+  // in a box of glass all escape).
+  EXPECT_LT(worst, 0.015);
   EXPECT_GT(texels, 30u);
 }
 
