@@ -54,12 +54,14 @@ struct SensorRayPatterns {
   }
 };
 
-// One batch of a point's sky rays: `count` of them, cosine-distributed; with portals (the scene's
-// glazing), half cosine-distributed and half aimed at the glazing, each weighted by the balance
-// heuristic (sky_portals.h).
+// One batch of a point's sky rays: `count` of them, cosine-distributed; with glazing in front of the
+// surface at `at` facing `normal` (sky_portals.h), a quarter cosine-distributed and the rest aimed
+// into the glazing, each weighted by the balance heuristic. Rays start within `reach` (metres) of
+// `at`: a texel's footprint.
 class SkyRaySet {
  public:
-  SkyRaySet(const SkyPortals* portals, uint32_t count);
+  SkyRaySet(const SkyPortals& portals, uint32_t count, Vec3 at, Vec3 normal, float reach = 0);
+  uint32_t count() const { return count_; }
   // Ray k's direction from `origin`, for a surface of shading normal n and geometric normal ng.
   Vec3 direction(uint32_t k, Vec3 n, Vec3 ng, Vec3 origin, uint32_t pattern) const;
   // Lux per cd/m2 of what ray k (along d from `origin`) sees: pi / count for cosine-distributed
@@ -67,7 +69,7 @@ class SkyRaySet {
   double lux_per_luminance(Vec3 d, Vec3 n, Vec3 ng, Vec3 origin) const;
 
  private:
-  const SkyPortals* portals_;
+  PortalView portals_;
   uint32_t count_, cosine_;
 };
 

@@ -69,7 +69,7 @@ DirectSky direct_sky(const Sensor& s, size_t index, const SkyPatches& fine, cons
   const SensorRayPatterns pattern(rng);
   std::map<uint32_t, float> seen;
   DirectSky out;
-  const SkyRaySet set(portals.any_in_front(origin, s.normal) ? &portals : nullptr, rays_per_batch(rays));
+  const SkyRaySet set(portals, rays_per_batch(rays), origin, s.normal);
   for (uint32_t b = 0; b < kSensorBatches; ++b)
     for (uint32_t k = 0; k < rays_per_batch(rays); ++k) {
       const Vec3 d = set.direction(k, s.normal, s.normal, origin, pattern.batch[b]);

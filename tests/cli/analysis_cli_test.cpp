@@ -192,8 +192,8 @@ std::vector<std::vector<double>> classroom_readings(const std::string& case_name
 // The issue asks RMS within 2% and every point within 6%. And the noise each reading states must
 // be honest: a point's error against the reference over both standard errors would scatter as a
 // standard normal deviate if they were all there is. They leave out the bake's own texel noise and
-// bias (shared by every batch of a point's rays), so the scatter is wider: measured RMS 1.69 (the
-// sensors' own rays, half aimed at the windows, are quiet: 0.36% per point). Above 2, the stated
+// bias (shared by every batch of a point's rays), so the scatter is wider: measured RMS 1.64 (the
+// sensors' own rays, three quarters aimed into the windows, are quiet: 0.24% per point). Above 2, the stated
 // noise would hide three quarters of the error's variance.
 TEST(ClassroomSample, DaylightFactorsAtTheDefaultsMatchThePathTracerWithinTheirStatedNoise) {
   const auto rows = classroom_readings("against_reference", "--sky cie-overcast --daylight-factor");

@@ -6,7 +6,6 @@
 #include <functional>
 
 #include "base/errors.h"
-#include "baker/pipeline/quality_presets.h"
 #include "io/gltf/gltf_loader.h"
 #include "support/scene_builders.h"
 
@@ -167,13 +166,13 @@ SkyLight sun_only(double zenith_degrees, double normal_lux) {
 
 // The classroom's floor under the CIE overcast sky, baked twice with different seeds: each texel's
 // difference over sqrt(2) is one bake's noise, RMS over the floor relative to its mean. Issue 30
-// asks under 3% for a heat map. Rays aimed at the windows (sky_portals.h) took the defaults' from
-// 11.2% to 5.3%; `--quality production` (1,024 sky rays a texel) measures 2.2%. Each bake states
-// its texels' sky noise (report.json).
-TEST(SkyLight, TheClassroomFloorsTexelsAreQuietEnoughForAHeatMapAtProductionAndSaySo) {
+// asks under 3% at the defaults for a heat map. Cosine-distributed rays alone measured 11.2%; half
+// of them aimed at the panes by their area, 5.3%; three quarters aimed into the windows' solid
+// angles, each window chosen by what it could bring (sky_portals.h), 2.5%. Each bake states its
+// texels' sky noise (report.json).
+TEST(SkyLight, TheClassroomFloorsTexelsAreQuietEnoughForAHeatMapAtTheDefaultsAndSaySo) {
   Scene scene = load_gltf(test::source_path("samples/classroom/classroom.gltf")).scene;
   BakeOptions options;
-  apply_quality_preset("production", options);
   options.sky.enabled = true;
   options.sky.distribution.model = SkyModel::CieOvercast;
   options.sky.zenith_luminance = 1000;
@@ -196,7 +195,7 @@ TEST(SkyLight, TheClassroomFloorsTexelsAreQuietEnoughForAHeatMapAtProductionAndS
   RecordProperty("floor_noise_percent_of_mean", std::to_string(100 * noise));
   RecordProperty("stated_sky_noise_percent", std::to_string(100 * a.report.sky_noise));
   EXPECT_LT(noise, 0.03);
-  // Stated from each texel's interleaved eighths, it overstates (measured 5.4% to the floor's 2.2%),
+  // Stated from each texel's interleaved eighths, it overstates (measured 8.7% to the floor's 2.5%),
   // and must not understate.
   EXPECT_GT(a.report.sky_noise, noise);
 }

@@ -96,11 +96,11 @@ void expect_floor_lux(const Scene& scene, const BakeOptions& options, double nor
     ++texels;
   }
   ::testing::Test::RecordProperty("worst_relative_error", std::to_string(worst));
-  // 1.5% bounds 1,024 sky rays' sampling of the pane's fall-off toward grazing: half of them aimed
-  // at the panes by their area (sky_portals.h), which from near a wall see it edge-on. Measured
-  // 1.0%; 0.31% with 8,192 rays, so noise, not bias (0.39% when all were cosine-distributed, which
-  // in a box of glass all escape).
-  EXPECT_LT(worst, 0.015);
+  // 1% bounds 1,024 sky rays' sampling of the pane's fall-off toward grazing, three quarters of
+  // them aimed into the panes' solid angles (sky_portals.h). Measured 0.69% (0.39% when all were
+  // cosine-distributed, which in a box of glass all escape; 1.0% when aimed at points spread over
+  // the panes by area).
+  EXPECT_LT(worst, 0.01);
   EXPECT_GT(texels, 30u);
 }
 
