@@ -107,6 +107,7 @@ radbake::DisplaySummary write_display(const radbake::BakeCommand& cmd, const rad
   summary.prelit_detail = vertex_lit ? 0 : light.pages.detail;
   summary.triangles = written.triangles;
   summary.camera = written.camera;
+  if (written.camera_added) summary.added_camera = result.display_camera;
   return summary;
 }
 

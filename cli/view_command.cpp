@@ -4,11 +4,13 @@
 #include <spawn.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <thread>
@@ -16,6 +18,7 @@
 #include "base/errors.h"
 #include "cli/interrupts.h"
 #include "cli/served_files.h"
+#include "cli/share_folder.h"
 
 extern char** environ;
 
@@ -44,6 +47,42 @@ std::string slurp(const fs::path& file) {
   return out.str();
 }
 
+// A file as it is sent: read in chunks as the connection takes them, never whole, and never
+// compressed. The server listens on 127.0.0.1 only, where compressing costs the server more time
+// than the bytes it saves (brotli took 2.35 CPU s for three.core.js, per request). Its ETag (size
+// and modification time) lets a browser revalidate what it holds with one request; "no-cache"
+// makes it ask, so a rebaked folder shows its new files.
+void send_file(const fs::path& path, const httplib::Request& request, httplib::Response& response) {
+  std::error_code error;
+  const uintmax_t size = fs::file_size(path, error);
+  const auto modified = fs::last_write_time(path, error).time_since_epoch().count();
+  if (error) {
+    response.status = 404;
+    response.set_content("not found\n", "text/plain");
+    return;
+  }
+  const std::string tag = "\"" + std::to_string(size) + "-" + std::to_string(modified) + "\"";
+  response.set_header("ETag", tag);
+  response.set_header("Cache-Control", "no-cache");
+  if (request.get_header_value("If-None-Match") == tag) {
+    response.status = 304;
+    return;
+  }
+  if (size == 0) {
+    response.set_content("", content_type(path));
+    return;
+  }
+  auto file = std::make_shared<std::ifstream>(path, std::ios::binary);
+  response.set_content_provider(size_t(size), content_type(path),
+                                [file](size_t offset, size_t length, httplib::DataSink& sink) {
+                                  char chunk[1 << 16];
+                                  file->seekg(std::streamoff(offset));
+                                  file->read(chunk, std::streamsize(std::min(length, sizeof chunk)));
+                                  const std::streamsize got = file->gcount();
+                                  return got > 0 && sink.write(chunk, size_t(got));
+                                });
+}
+
 // A route that serves what served_file allows under `root`, the rest of the path being the file.
 void serve_folder(httplib::Server& server, const std::string& prefix, const fs::path& root) {
   server.Get(prefix + "(.*)", [root](const httplib::Request& request, httplib::Response& response) {
@@ -53,7 +92,7 @@ void serve_folder(httplib::Server& server, const std::string& prefix, const fs::
       response.set_content(file.refusal == Refusal::Forbidden ? "forbidden\n" : "not found\n", "text/plain");
       return;
     }
-    response.set_content(slurp(file.path), content_type(file.path));
+    send_file(file.path, request, response);
   });
 }
 
@@ -95,14 +134,12 @@ int run_view(const ViewCommand& command) {
       throw InputError("'" + clipped(folder) + "' is not a radbake output folder (it has no report.json)");
     folders.push_back(fs::canonical(folder));
   }
-  const fs::path web = RADBAKE_WEB_DIR;
-  if (!fs::is_regular_file(web / "node_modules" / "three" / "build" / "three.module.js"))
-    throw InputError("three.js is not installed in " + web.string() + "/node_modules: run ./dev test (npm ci in web/)");
+  const fs::path web = viewer_share_folder() / "web";
 
   httplib::Server server;
   server.Get("/favicon.ico", [](const httplib::Request&, httplib::Response& response) { response.status = 204; });
-  server.Get("/", [&](const httplib::Request&, httplib::Response& response) {
-    response.set_content(slurp(web / "viewer" / "index.html"), "text/html; charset=utf-8");
+  server.Get("/", [&](const httplib::Request& request, httplib::Response& response) {
+    send_file(web / "viewer" / "index.html", request, response);
   });
   const nlohmann::json bakes = bakes_json(folders);
   for (const auto& bake : bakes)
@@ -112,10 +149,10 @@ int run_view(const ViewCommand& command) {
     response.set_content(bakes.dump(), "application/json");
   });
   serve_folder(server, "/viewer/", web / "viewer");
-  server.Get("/radbake-lightmap.js", [&](const httplib::Request&, httplib::Response& response) {
-    response.set_content(slurp(web / "radbake-lightmap.js"), "text/javascript; charset=utf-8");
+  server.Get("/radbake-lightmap.js", [&](const httplib::Request& request, httplib::Response& response) {
+    send_file(web / "radbake-lightmap.js", request, response);
   });
-  serve_folder(server, "/three/", web / "node_modules" / "three");
+  serve_folder(server, "/three/", web / "three");
   serve_folder(server, "/a/", folders[0]);
   if (folders.size() > 1) serve_folder(server, "/b/", folders[1]);
 

@@ -97,6 +97,7 @@ class DisplayWriter {
     }
     DisplayOutput out;
     out.camera = add_cameras(scene_nodes);
+    out.camera_added = camera_added_;
     doc_["scenes"].push_back({{"name", "radbake display"}, {"nodes", scene_nodes}});
     doc_["scene"] = 0;
     describe();
@@ -136,6 +137,7 @@ class DisplayWriter {
     const json camera = {{"type", "perspective"}, {"name", "radbake"},
                          {"perspective", {{"yfov", c.yfov}, {"znear", c.znear}}}};
     add_camera(camera, "radbake camera", {c.eye.x, c.eye.y, c.eye.z}, c.forward, {0, 1, 0}, scene_nodes);
+    camera_added_ = true;
     return "added, the input has none" + left_out + ": " + c.why;
   }
 
@@ -348,6 +350,7 @@ class DisplayWriter {
 
   const DisplayInput& in_;
   json doc_;
+  bool camera_added_ = false;
   BinaryWriter bin_;
   std::vector<uint8_t> has_back_;
   std::map<std::tuple<int, bool, float>, int> page_materials_;

@@ -37,6 +37,7 @@ struct DisplayOutput {
   std::string file;  // NAME_display.glb
   size_t triangles = 0;
   std::string camera;  // which camera the file opens on, and why
+  bool camera_added = false;  // it opens on DisplayInput::camera, the input having none
 };
 
 // Writes FOLDER/NAME_display.glb, self-contained (geometry and images in its BIN chunk).

@@ -143,6 +143,12 @@ void write_report(const std::string& path, const RunInfo& run, const Scene& scen
                   {"highlight_channel_cd_m2", d.exposure.highlight_channel},
                   {"triangles", d.triangles}};
   if (!d.file.empty()) display["camera"] = d.camera;
+  // For `radbake view`, whose page opens the engine file, which holds no camera of radbake's.
+  if (d.added_camera)
+    display["camera_view"] = {{"eye", {d.added_camera->eye.x, d.added_camera->eye.y, d.added_camera->eye.z}},
+                              {"forward", {d.added_camera->forward.x, d.added_camera->forward.y, d.added_camera->forward.z}},
+                              {"yfov", d.added_camera->yfov}, {"znear", d.added_camera->znear},
+                              {"in_room", d.added_camera->in_room}};
   if (d.prelit_detail > 0) display["prelit_detail"] = d.prelit_detail;
   if (!refinement.empty()) display["vertex_light_vs_lightmap"] = refinement;
   json report = {

@@ -22,6 +22,7 @@ struct DisplaySummary {
   Exposure exposure;              // what both files record, and how it was metered
   size_t triangles = 0;
   std::string camera;  // which camera the display file opens on, and why
+  std::optional<DisplayCamera> added_camera;  // the one it opens on, when the input had none
   // Vertex light against the lightmap as the mesh is refined: (triangles, area-weighted RMS
   // difference relative to the mean light).
   std::vector<std::pair<size_t, double>> refinement;

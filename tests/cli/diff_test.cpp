@@ -96,7 +96,8 @@ class DiffBadInput : public ::testing::TestWithParam<std::pair<std::string, std:
 
 TEST_P(DiffBadInput, ExitsTwoWithOneErrorLine) {
   std::string parent = test::fresh_folder("diff_bad_" + GetParam().first);
-  const std::string a = bake_folder("diff_bad_a", {{8, 100}});
+  // A folder per case: ctest runs the cases in parallel, and a shared one was remade under another.
+  const std::string a = bake_folder("diff_bad_a_" + GetParam().first, {{8, 100}});
   std::ofstream(parent + "/junk_lightmap_0.exr") << "not an image";
   const std::map<std::string, std::string> args = {
       {"missing", a + " " + parent + "/nothing"},

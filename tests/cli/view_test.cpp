@@ -129,6 +129,43 @@ TEST(View, ServesTheFoldersFilesAndNothingElseOnLocalhostOnly) {
   EXPECT_EQ(listening, std::vector<std::string>{"0100007F:" + std::string(port_hex)});
 }
 
+// Files go out as they are on disk, never compressed (the server is on 127.0.0.1 only, where
+// brotli cost 2.35 CPU s a request for three.core.js and saved nothing), with a validator: a
+// browser holding the file revalidates it with one empty 304. Ranges are honoured.
+TEST(View, FilesAreSentPlainWithAValidatorAndRanges) {
+  const std::string folder = cornell_bake("view_plain");
+  ViewServer server({folder});
+  ASSERT_GT(server.port(), 0);
+  httplib::Client client("127.0.0.1", server.port());
+  std::ifstream in(test::source_path("web/node_modules/three/build/three.core.js"), std::ios::binary);
+  const std::string pinned((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ASSERT_GT(pinned.size(), 100000u);
+  const auto full = client.Get("/three/build/three.core.js", {{"Accept-Encoding", "br, gzip, deflate"}});
+  ASSERT_TRUE(full);
+  EXPECT_EQ(full->status, 200);
+  EXPECT_FALSE(full->has_header("Content-Encoding")) << full->get_header_value("Content-Encoding");
+  EXPECT_EQ(full->body, pinned);
+  EXPECT_EQ(full->get_header_value("Cache-Control"), "no-cache");
+  const std::string tag = full->get_header_value("ETag");
+  ASSERT_FALSE(tag.empty());
+  const auto again = client.Get("/three/build/three.core.js", {{"If-None-Match", tag}});
+  ASSERT_TRUE(again);
+  EXPECT_EQ(again->status, 304);
+  EXPECT_TRUE(again->body.empty());
+  const auto part = client.Get("/three/build/three.core.js", {{"Range", "bytes=100-199"}});
+  ASSERT_TRUE(part);
+  EXPECT_EQ(part->status, 206);
+  EXPECT_EQ(part->body, pinned.substr(100, 100));
+  // A bake's own files alike, and the page.
+  const auto page = client.Get("/", {{"Accept-Encoding", "gzip"}});
+  ASSERT_TRUE(page);
+  EXPECT_FALSE(page->has_header("Content-Encoding"));
+  EXPECT_NE(page->body.find("radbake view"), std::string::npos);
+  const auto exr = client.Get("/a/cornell_box_lightmap_0.exr");
+  ASSERT_TRUE(exr);
+  EXPECT_EQ(exr->body.size(), fs::file_size(folder + "/cornell_box_lightmap_0.exr"));
+}
+
 TEST(View, AFolderThatIsNotABakeIsRefusedWithOneLine) {
   const std::string empty = test::fresh_folder("view_not_a_bake");
   const std::string garbled = test::fresh_folder("view_garbled_report");
@@ -232,7 +269,7 @@ TEST(View, EveryDisplayModeDrawsTheBakeWithoutAnError) {
     steps.push_back({{"mode", mode}, {"pixels", {{128, 128}, {120, 136}}}});
   // Three points of the grid's last row (9 x 7 points at 1 m), drawn last, so no other point
   // covers them.
-  steps.push_back({{"mode", "sensors"}, {"max", 2000}, {"sensors", {54, 58, 62}}});
+  steps.push_back({{"mode", "sensors"}, {"max", 2000}, {"sensors", {54, 58, 62}}, {"camera", -1}});
   const nlohmann::json result = drive_page(server, steps);
   ASSERT_FALSE(result.is_null());
   for (size_t s = 0; s + 1 < steps.size(); ++s)
@@ -251,6 +288,104 @@ TEST(View, EveryDisplayModeDrawsTheBakeWithoutAnError) {
     const auto expected = turbo_colour(scale_fraction(double(s["lux"]), scale, 2000));
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(int(s["rgb"][c]), int(expected[size_t(c)]), 3) << s.dump();
   }
+}
+
+// The pixel in the middle of the first frame (256 x 256), and the surface the page picks there.
+const nlohmann::json kMiddle = nlohmann::json::array({{{"mode", "baked"}, {"pixels", {{128, 128}}}}});
+std::string middle_surface(const nlohmann::json& result) {
+  const nlohmann::json& pick = result["steps"][0]["pixels"][0]["pick"];
+  return pick.is_null() ? "nothing" : pick["surface"].get<std::string>();
+}
+
+// The first view (issue 31): the scene's own camera (the Cornell box's); for a scene without one
+// (the classroom), the view radbake chose for the display file, inside the largest room.
+TEST(View, TheFirstViewIsTheScenesCameraElseInsideItsLargestRoom) {
+  const std::string cornell = cornell_bake("view_first_cornell");
+  {
+    ViewServer server({cornell});
+    ASSERT_GT(server.port(), 0);
+    const nlohmann::json result = drive_page(server, kMiddle);
+    ASSERT_FALSE(result.is_null());
+    const std::vector<double> eye = result["firstCamera"], expected = {0.278, 0.273, -0.8};
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(eye[size_t(k)], expected[size_t(k)], 1e-4) << result["firstCamera"];
+    EXPECT_EQ(middle_surface(result), "tall_block") << "the Cornell box";  // its camera looks at it
+  }
+  const std::string classroom = test::fresh_folder("view_first_classroom") + "/out";
+  const test::Outcome bake = test::radbake("bake " + test::source_path("samples/classroom/classroom.gltf") + " -o " +
+                                           classroom + " --quiet --sky cie-overcast --max-page-size 256");
+  ASSERT_EQ(bake.status, 0) << bake.err;
+  std::ifstream report_file(classroom + "/report.json");
+  const nlohmann::json report = nlohmann::json::parse(report_file);
+  const nlohmann::json& view = report["display"]["camera_view"];
+  ASSERT_TRUE(view.is_object()) << report["display"].dump();
+  EXPECT_TRUE(view["in_room"].get<bool>());
+  ViewServer server({classroom});
+  ASSERT_GT(server.port(), 0);
+  const nlohmann::json result = drive_page(server, kMiddle);
+  ASSERT_FALSE(result.is_null());
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(double(result["firstCamera"][k]), double(view["eye"][k]), 1e-4) << result["firstCamera"];
+  // Along its 9 m length from the west end, to the east wall.
+  EXPECT_EQ(middle_surface(result), "wall_east") << "the classroom";
+  // Inside the room (samples/classroom: 9 m x 7 m from the origin, 3 m high), not outside it as before.
+  const std::vector<double> eye = result["firstCamera"];
+  EXPECT_GT(eye[0], 0.0);
+  EXPECT_LT(eye[0], 9.0);
+  EXPECT_GT(eye[1], 0.5);
+  EXPECT_LT(eye[1], 3.0);
+  EXPECT_GT(eye[2], 0.0);
+  EXPECT_LT(eye[2], 7.0);
+  EXPECT_GT(int(result["steps"][0]["pixels"][0]["rgb"][1]), 20);  // a lit wall or floor ahead
+  // A model that is no room and has no camera (tests/fixtures/open_floor.gltf under a sky): seen
+  // from outside, the model in the middle.
+  const std::string floor = test::fresh_folder("view_first_open_floor") + "/out";
+  const test::Outcome floor_bake = test::radbake("bake " + test::source_path("tests/fixtures/open_floor.gltf") + " -o " +
+                                                 floor + " --quiet --sky uniform");
+  ASSERT_EQ(floor_bake.status, 0) << floor_bake.err;
+  ViewServer floor_server({floor});
+  ASSERT_GT(floor_server.port(), 0);
+  const nlohmann::json outside = drive_page(floor_server, kMiddle);
+  ASSERT_FALSE(outside.is_null());
+  EXPECT_EQ(middle_surface(outside), "floor") << "the open floor";
+}
+
+// "Lightmap only" shows the page in colour (the red wall's bleeding is what a bake is about), and
+// the exposure slider's range comes from the bake's light: at its lowest nothing the camera sees
+// clips, at its highest the dim texels reach white.
+TEST(View, TheLightmapIsShownInColourWithAnExposureRangeFromTheData) {
+  const std::string folder = cornell_bake("view_colour");
+  ViewServer server({folder});
+  ASSERT_GT(server.port(), 0);
+  const nlohmann::json result = drive_page(server, nlohmann::json::array({
+      {{"mode", "lightmap"}, {"ev", -1}, {"pixels", kWalls}},
+      {{"mode", "lightmap"}, {"ev", "lowest"}, {"pixels", kWalls}},
+      {{"mode", "lightmap"}, {"ev", "highest"}, {"pixels", kWalls}},
+  }));
+  ASSERT_FALSE(result.is_null());
+  // Each pixel's colour is its texel's: red over green as the EXR holds it, the pixel's sRGB
+  // linearised (a grey view gave 1 everywhere).
+  const LightmapPage page = read_lightmap_exr(folder + "/cornell_box_lightmap_0.exr");
+  auto linear = [](int srgb) {
+    const double c = srgb / 255.0;
+    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+  };
+  double most_tinted = 0;
+  for (const nlohmann::json& p : result["steps"][0]["pixels"]) {
+    ASSERT_FALSE(p["pick"].is_null()) << p.dump();
+    const Rgb texel = page.texels[size_t(p["pick"]["texel"][1]) * size_t(page.width) + size_t(p["pick"]["texel"][0])];
+    const double expected = texel.x / texel.y, shown = linear(p["rgb"][0]) / linear(p["rgb"][1]);
+    RecordProperty("texel_r_over_g_" + std::to_string(int(p["x"])), std::to_string(expected));
+    // 4% bounds 8-bit rounding of two channels above 60 of 255.
+    EXPECT_NEAR(shown / expected, 1.0, 0.04) << p.dump() << " texel " << texel.x << " " << texel.y << " " << texel.z;
+    most_tinted = std::max(most_tinted, std::fabs(expected - 1));
+  }
+  EXPECT_GT(most_tinted, 0.1);  // some texel there is tinted, so a grey view would fail
+  const std::vector<double> range = result["evRange"];
+  EXPECT_LT(range[0], range[2]);
+  EXPECT_GT(range[1], range[2]);
+  for (const nlohmann::json& p : result["steps"][1]["pixels"])
+    for (int c = 0; c < 3; ++c) EXPECT_LT(int(p["rgb"][c]), 200) << "clipped at the lowest EV " << range[0] << ": " << p.dump();
+  for (const nlohmann::json& p : result["steps"][2]["pixels"])
+    EXPECT_EQ(std::max({int(p["rgb"][0]), int(p["rgb"][1]), int(p["rgb"][2])}), 255) << "at the highest EV " << range[1] << ": " << p.dump();
 }
 
 TEST(View, ExposureWalkingAndTheScreenshotButtonDoWhatTheySay) {

@@ -1,16 +1,17 @@
 // The MOZ_lightmap plugin (web/radbake-lightmap.js) on the engine file (NAME.gltf) in three.js, in
 // Debian's headless Chromium: PBR materials plus the lightmap show what the display file shows
 // (within 5%), at the exposure the file carries; baked punctual lights are not drawn again; the
-// engine file keeps its lightmap through `gltf-transform optimize` with web/gltf-transform.config.mjs.
-// usage: node tests/web/plugin.test.mjs --bake DIR --work DIR
+// engine file keeps its lightmap through `gltf-transform optimize` with radbake's config.
+// usage: node tests/web/plugin.test.mjs --bake DIR --work DIR --share BUILD/share/radbake
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
 import { copyFileSync, mkdirSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { openRenderer } from '../../web/render/render.mjs';
 import { pixelToLinear } from '../../web/render/expect.mjs';
 import {
-  args, compare, displayFile, expectations, fmt, loadBake, luminance, run, NEAR_CAMERA, SIZE, SURFACE_PIXELS, WEB_DIR,
+  args, compare, displayFile, expectations, fmt, loadBake, luminance, run, NEAR_CAMERA, SIZE, SOURCE_DIR, SURFACE_PIXELS, WEB_DIR,
 } from './support.mjs';
 
 const { work, engine } = args();
@@ -139,20 +140,35 @@ test('exposure: options.exposure wins; without display_exposure, pi / intensity'
   assert.ok(Math.abs(old.materials.find((m) => m.name === lit.name).lightMapIntensity - Math.PI) < 1e-9);
 });
 
-test('engine file through gltf-transform optimize with web/gltf-transform.config.mjs keeps its lightmap', async (t) => {
-  const out = path.join(work, 'engine_optimize.glb');
-  run('gltf-transform', ['optimize', '--config', path.join(WEB_DIR, 'gltf-transform.config.mjs'), engine, out]);
-  const r = await near(out, { meshopt: true, out: path.join(work, 'plugin_optimize.png') });
-  assert.deepEqual(r.consoleErrors, []);
-  assert.ok(r.materials.length > 0 && r.materials.every((m) => m.lightMap), 'every material kept its lightmap');
-  const failures = [];
-  r.points.forEach((p, i) => {
-    const c = compare(p.rgb, expected[i].linear);
-    t.diagnostic(`${expected[i].object} (${p.x},${p.y}): ${fmt(p.rgb)}, worst channel ${(c.worst * 100).toFixed(2)}%`);
-    if (!c.ok) failures.push(`${expected[i].object} (${p.x},${p.y}) ${fmt(p.rgb)}`);
+// The recipe as a user runs it: the gltf-transform CLI web/ pins, and the same version installed
+// apart from web/ as npm installs it anywhere (tests/tools/node_modules), run from a folder of its
+// own with the config from the build's share folder (as installed; docs/install.md). Before issue 31
+// the apart CLI kept MOZ_lightmap but pruned TEXCOORD_0 and TEXCOORD_1: the config's extension was
+// built on web/'s copy of @gltf-transform/core, not the CLI's.
+const share = path.resolve(process.argv[process.argv.indexOf('--share') + 1]);
+const recipes = [
+  { name: 'web', cli: path.join(WEB_DIR, 'node_modules', '.bin', 'gltf-transform'), config: path.join(WEB_DIR, 'gltf-transform.config.mjs') },
+  { name: 'apart', cli: path.join(SOURCE_DIR, 'tests', 'tools', 'node_modules', '.bin', 'gltf-transform'), config: path.join(share, 'web', 'gltf-transform.config.mjs') },
+];
+for (const recipe of recipes) {
+  test(`engine file through gltf-transform optimize (the CLI ${recipe.name === 'web' ? "web/ pins" : 'installed apart'}) keeps its lightmap`, async (t) => {
+    assert.ok(process.argv.includes('--share'), 'no --share DIR given');
+    const out = path.join(work, `engine_optimize_${recipe.name}.glb`);
+    const cwd = path.join(work, `cli_${recipe.name}`);
+    mkdirSync(cwd, { recursive: true });
+    execFileSync(recipe.cli, ['optimize', '--config', recipe.config, engine, out], { cwd, encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] });
+    const r = await near(out, { meshopt: true, out: path.join(work, `plugin_optimize_${recipe.name}.png`) });
+    assert.deepEqual(r.consoleErrors, []);
+    assert.ok(r.materials.length > 0 && r.materials.every((m) => m.lightMap), 'every material kept its lightmap');
+    const failures = [];
+    r.points.forEach((p, i) => {
+      const c = compare(p.rgb, expected[i].linear);
+      t.diagnostic(`${expected[i].object} (${p.x},${p.y}): ${fmt(p.rgb)}, worst channel ${(c.worst * 100).toFixed(2)}%`);
+      if (!c.ok) failures.push(`${expected[i].object} (${p.x},${p.y}) ${fmt(p.rgb)}`);
+    });
+    assert.deepEqual(failures, []);
   });
-  assert.deepEqual(failures, []);
-});
+}
 
 // What the README says about gltfpack and the engine file, checked so the text cannot drift:
 // gltfpack drops MOZ_lightmap whatever the flags (it writes only extensions it knows), and keeps

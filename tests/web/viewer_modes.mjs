@@ -4,9 +4,11 @@
 // for half a second), pixels: [[x, y], ...], sensors: [k, ...] (where sensor k is drawn, its
 // reading and the pixel there), probes: [k, ...] (light probe k's sphere: where it is drawn, the
 // pixel there with the probes hidden and shown), screenshot?: FILE, button?: true (the page's own
-// screenshot button: the download's size) }, and prints one JSON line: { consoleErrors,
-// loadSeconds, steps: [{ scale, camera, download, pixels: [{ x, y, rgb, pick }], probeCount,
-// probes: [{ x, y, position, hidden, shown }] }] }.
+// screenshot button: the download's size), camera?: k (-1: the scene framed) }, and prints one
+// JSON line: { consoleErrors, loadSeconds, firstFrameSeconds (navigation to the first frame
+// drawn), firstCamera (where the page opened, before camera 0), evRange: [min, max, start],
+// steps: [{ scale, camera, download, pixels: [{ x, y, rgb, pick }], probeCount, probes: [{ x, y,
+// position, hidden, shown }] }] }.
 //   node viewer_modes.mjs URL WIDTH HEIGHT 'STEPS'
 import { readFile } from 'node:fs/promises';
 import path from 'node:path';
@@ -28,6 +30,10 @@ try {
   await page.goto(url);
   await page.waitForFunction(() => window.radbakeView !== undefined);
   await page.evaluate(() => window.radbakeView.ready);
+  await page.waitForFunction(() => window.radbakeView.firstFrameSeconds() !== undefined);
+  const firstFrameSeconds = await page.evaluate(() => window.radbakeView.firstFrameSeconds());
+  const firstCamera = await page.evaluate(() => window.radbakeView.cameraPosition());
+  const evRange = await page.evaluate(() => window.radbakeView.evRange());
   await page.evaluate(() => window.radbakeView.useCamera(0));
   const steps = [];
   for (const step of JSON.parse(stepsJson)) {
@@ -73,7 +79,7 @@ try {
     steps.push({ scale, camera, download, pixels, sensors, probeCount, probes });
   }
   const loadSeconds = await page.evaluate(() => window.radbakeView.loadSeconds());
-  console.log(JSON.stringify({ consoleErrors, loadSeconds, steps }));
+  console.log(JSON.stringify({ consoleErrors, loadSeconds, firstFrameSeconds, firstCamera, evRange, steps }));
 } finally {
   await browser.close();
 }

@@ -10,6 +10,11 @@ import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { RadbakeLightmapPlugin } from '/radbake-lightmap.js';
 import { drawLegend, niceNumberAtOrAbove, turbo, turboGlsl } from '/viewer/legend.js';
 
+const started = performance.now();
+// The bakes start loading before the renderer is made: a WebGL context takes a third of a second
+// in a software renderer (headless Chromium's), and the network need not wait for it.
+const loading = loadBakes();
+
 const $ = (id) => document.getElementById(id);
 const canvas = $('view');
 const renderer = new THREE.WebGLRenderer({ canvas, antialias: true, preserveDrawingBuffer: true });
@@ -18,26 +23,30 @@ renderer.toneMapping = THREE.LinearToneMapping;  // exposure in EV: a plain mult
 const camera = new THREE.PerspectiveCamera(50, 1, 0.01, 1000);
 const controls = new OrbitControls(camera, canvas);
 
-// One loaded bake: its glTF, its JSON, its EXR pages as float textures, and per display mode the
-// material each of its meshes wears.
+// One loaded bake: its glTF, its JSON, and per display mode the material each of its meshes wears;
+// its EXR pages as float textures come later (pagesLoading): the baked light's first frame needs
+// only the glTF and its PNG pages, the readout and the analysis modes the EXRs.
 async function loadBake(bake, exposure) {
   const loader = new GLTFLoader();
   loader.register((parser) => new RadbakeLightmapPlugin(parser, exposure ? { exposure } : {}));
   const gltf = await loader.loadAsync(bake.url + bake.gltf);
   const json = gltf.parser.json;
   const record = json.extras.radbake;
-  const pages = await Promise.all(record.pages.map((p) => new EXRLoader().setDataType(THREE.FloatType).loadAsync(bake.url + p.exr)));
-  for (const page of pages) {
-    page.minFilter = page.magFilter = THREE.NearestFilter;
-    page.generateMipmaps = false;
-  }
+  const pagesLoading = Promise.all(record.pages.map((p) => new EXRLoader().setDataType(THREE.FloatType).loadAsync(bake.url + p.exr)))
+    .then((pages) => {
+      for (const page of pages) {
+        page.minFilter = page.magFilter = THREE.NearestFilter;
+        page.generateMipmaps = false;
+      }
+      return pages;
+    });
   const scene = new THREE.Scene();
   scene.add(gltf.scene);
   const meshes = [];
   gltf.scene.traverse((o) => {
     if (o.isMesh) meshes.push({ mesh: o, baked: o.material, page: pageOf(gltf, json, o.material) });
   });
-  return { bake, gltf, json, record, pages, scene, meshes, sensors: await loadSensors(bake, scene), probes: probeSpheres(record, scene) };
+  return { bake, gltf, json, record, pages: [], pagesLoading, scene, meshes, sensors: await loadSensors(bake, scene), probes: probeSpheres(record, scene) };
 }
 
 // The bake's light probes (extras.radbake.probes, --probes) as white spheres lit by each probe:
@@ -118,18 +127,29 @@ function texelValue(page, x, y) {
 
 // The automatic top of a false-colour scale: the 99th percentile of the covered texels, rounded up
 // to 1, 2, 2.5 or 5 x 10^k, as radbake's own false-colour images choose it.
-function automaticMax(pages, factor) {
-  const values = [];
-  for (const page of pages) {
+function automaticMax(bake, factor) {
+  const values = litValues(bake);
+  if (!values.length) return 1;
+  return niceNumberAtOrAbove(factor * values[Math.min(values.length - 1, Math.ceil(0.99 * values.length) - 1)]);
+}
+
+// The photopic values of a bake's covered texels (every other one each way), sorted; worked out
+// once (a typed array sorts numerically, and fast: a million texels in tens of milliseconds).
+function litValues(bake) {
+  if (bake.litValues) return bake.litValues;
+  let count = 0;
+  for (const page of bake.pages) count += Math.ceil(page.image.width / 2) * Math.ceil(page.image.height / 2);
+  const values = new Float32Array(count);
+  let n = 0;
+  for (const page of bake.pages) {
     const { width, height } = page.image;
     for (let y = 0; y < height; y += 2) for (let x = 0; x < width; x += 2) {
-      const v = texelValue(page, x, y) * factor;
-      if (v > 0) values.push(v);
+      const v = texelValue(page, x, y);
+      if (v > 0) values[n++] = v;
     }
   }
-  if (!values.length) return 1;
-  values.sort((a, b) => a - b);
-  return niceNumberAtOrAbove(values[Math.min(values.length - 1, Math.ceil(0.99 * values.length) - 1)]);
+  bake.litValues = values.subarray(0, n).sort();
+  return bake.litValues;
 }
 
 const MODES = { baked: -1, lightmap: 0, falsecolour: 1, difference: 2, vertex: 3 };
@@ -167,7 +187,7 @@ const fragmentShader = `
     float a = dot(texture2D(pageA, t).rgb, vec3(0.2126, 0.7152, 0.0722));  // photopic, as PHOTOPIC
     vec3 c;
     if (mode == 0) {
-      c = vec3(a * displayScale);
+      c = texture2D(pageA, t).rgb * displayScale;  // in colour: the bleeding the bake is about
     } else if (mode == 1) {
       float v = a * valueScale;
       float f = logarithmic > 0.5 ? (log(max(v, 1e-30) / maxValue) / log(10.0) + decades) / decades : v / maxValue;
@@ -219,7 +239,9 @@ function setupMaterials() {
       m.vertex = m.mesh.geometry.attributes._baked_light ? analysisMaterial(u, page, null, true) : null;
     }
   }
-  // radbake diff's floor: 10% of the reference's mean texel value.
+  // radbake diff's floor: 10% of the reference's mean texel value (for the difference, so only
+  // with two bakes).
+  if (!b) return;
   let sum = 0, n = 0;
   for (const page of a.pages) for (let i = 0; i < page.image.data.length; i += 4) {
     const v = (page.image.data[i] + page.image.data[i + 1] + page.image.data[i + 2]) / 3;
@@ -249,8 +271,8 @@ function applyMode() {
     : mode === 'sensors' ? niceNumberAtOrAbove(Math.max(...sensors.lux))
     // A daylight factor is at most 100% (a surface in the open); the texels' noise can put the
     // 99th percentile a little above it, which rounding would make 200.
-    : daylight ? Math.min(100, automaticMax(state.a.pages, u.valueScale.value))
-    : automaticMax(state.a.pages, u.valueScale.value);
+    : daylight ? Math.min(100, automaticMax(state.a, u.valueScale.value))
+    : automaticMax(state.a, u.valueScale.value);
   if (sensors) {
     sensors.points.visible = mode === 'sensors';
     const colours = sensors.points.geometry.attributes.color, colour = new THREE.Color();
@@ -277,6 +299,22 @@ function applyMode() {
   state.scale = { max: u.maxValue.value, logarithmic: u.logarithmic.value > 0.5, decades: 3, unit };
 }
 
+// The exposure slider's range and start from the bake's own light: at its lowest EV the brightest
+// lit texels (the 99.9th percentile) show at a quarter of white, at its highest the dim ones (the
+// 2nd percentile) at white; it starts at the file's own exposure (display_exposure: the median lit
+// surface of what the display camera sees at 0.18), or, for a file without one, there.
+function exposureFromTheData() {
+  const scale = (state.a.record.display_exposure || 1) / Math.PI;
+  const values = litValues(state.a);
+  if (!values.length) return;
+  const at = (q) => scale * values[Math.min(values.length - 1, Math.floor(q * values.length))];
+  const start = state.a.record.display_exposure ? 0 : Math.round(2 * Math.log2(0.18 / at(0.5))) / 2;
+  const ev = $('ev');
+  ev.min = String(Math.min(start - 3, Math.floor(Math.log2(0.25 / at(0.999)))));
+  ev.max = String(Math.max(start + 3, Math.ceil(Math.log2(1 / at(0.02)))));
+  ev.value = String(start);
+}
+
 function resize() {
   const w = canvas.clientWidth, h = canvas.clientHeight;
   renderer.setSize(w, h, false);
@@ -289,11 +327,35 @@ window.addEventListener('resize', resize);
 function frame(root) {
   const box = new THREE.Box3().setFromObject(root);
   const centre = box.getCenter(new THREE.Vector3()), size = box.getSize(new THREE.Vector3()).length();
+  camera.fov = 50;
   camera.near = size / 1000;
   camera.far = size * 10;
   camera.position.copy(centre).add(new THREE.Vector3(0, size * 0.2, size * 0.9));
   controls.target.copy(centre);
   camera.updateProjectionMatrix();
+  controls.update();
+}
+
+// The view a person wants first: the glTF's first camera; else the one radbake chose for the
+// display file (report.json display.camera_view: inside the largest room, or outside looking at the
+// model); else the whole scene framed.
+function firstView() {
+  const view = state.a.bake.report.display?.camera_view;
+  if (state.a.gltf.cameras.length) useCamera(state.a.gltf.cameras[0]);
+  else if (view) useView(view);
+  else frame(state.a.scene);
+}
+
+function useView(view) {
+  const size = new THREE.Box3().setFromObject(state.a.scene).getSize(new THREE.Vector3()).length();
+  const eye = new THREE.Vector3(...view.eye), forward = new THREE.Vector3(...view.forward).normalize();
+  camera.position.copy(eye);
+  camera.fov = (view.yfov * 180) / Math.PI;
+  camera.near = view.znear;
+  camera.far = size * 10;
+  camera.lookAt(eye.clone().add(forward));
+  camera.updateProjectionMatrix();
+  controls.target.copy(eye).addScaledVector(forward, Math.min(1, 0.1 * size));
   controls.update();
 }
 
@@ -379,26 +441,40 @@ function loop(now) {
   else controls.update();
   last = now;
   render();
+  // performance.now() counts from navigation: the time to the first frame drawn.
+  if (state.firstFrameSeconds === undefined) state.firstFrameSeconds = performance.now() / 1000;
   requestAnimationFrame(loop);
 }
 
-async function start() {
-  const started = performance.now();
-  state.bakes = await (await fetch('/api/bakes')).json();
+async function loadBakes() {
+  const bakes = await (await fetch('/api/bakes')).json();
+  const a = await loadBake(bakes[0]);
   // B is shown at A's exposure: each bake's own would make a brighter design look the same.
-  state.a = await loadBake(state.bakes[0]);
-  if (state.bakes[1]) state.b = await loadBake(state.bakes[1], state.a.record.display_exposure);
+  const b = bakes[1] ? await loadBake(bakes[1], a.record.display_exposure) : null;
+  return { bakes, a, b };
+}
+
+async function start() {
+  Object.assign(state, await loading);
   $('title').textContent = `radbake view: ${state.bakes.map((b) => b.folder).join(' | ')}`;
-  setupMaterials();
   resize();
-  frame(state.a.scene);
   const cameras = $('camera');
   state.a.gltf.cameras.forEach((c, k) => cameras.add(new Option(c.name || `camera ${k}`, String(k))));
+  const view = state.a.bake.report.display?.camera_view;
+  if (!state.a.gltf.cameras.length && view) cameras.add(new Option(view.in_room ? 'in the room' : 'the model', '-2'));
+  firstView();
+  cameras.value = state.a.gltf.cameras.length ? '0' : view ? '-2' : '-1';
   cameras.addEventListener('change', () => {
     const k = Number(cameras.value);
-    if (k < 0) frame(state.a.scene);
+    if (k === -2) useView(view);
+    else if (k < 0) frame(state.a.scene);
     else useCamera(state.a.gltf.cameras[k]);
   });
+  // The baked light is drawn from here on; the rest waits for the EXR pages.
+  requestAnimationFrame(loop);
+  for (const bake of [state.a, state.b]) if (bake) bake.pages = await bake.pagesLoading;
+  setupMaterials();
+  exposureFromTheData();
   const modes = $('mode');
   if (daylightReference() > 0) modes.add(new Option('daylight factor', 'daylight'));
   if (state.a.sensors) modes.add(new Option('sensors (lux)', 'sensors'));
@@ -422,7 +498,6 @@ async function start() {
   });
   applyMode();
   state.loadSeconds = (performance.now() - started) / 1000;
-  requestAnimationFrame(loop);
 }
 
 // For tests and scripts.
@@ -430,11 +505,14 @@ const ready = start();
 window.radbakeView = {
   ready,
   loadSeconds: () => state.loadSeconds,
-  useCamera: (k) => {  // the glTF's camera k, or the whole scene framed when it has none
+  useCamera: (k) => {  // the glTF's camera k; -1 the whole scene framed; else the first view
     if (state.a.gltf.cameras[k]) useCamera(state.a.gltf.cameras[k]);
-    else frame(state.a.scene);
+    else if (k === -1) frame(state.a.scene);
+    else firstView();
     render();
   },
+  evRange: () => [Number($('ev').min), Number($('ev').max), Number($('ev').value)],
+  firstFrameSeconds: () => state.firstFrameSeconds,
   setMode: (mode, options = {}) => {
     $('mode').value = mode;
     state.mode = mode;
@@ -442,7 +520,8 @@ window.radbakeView = {
     if (options.max !== undefined) $('max').value = String(options.max);
     if (options.compare) $('compare').value = options.compare;
     if (options.split !== undefined) state.split = options.split;
-    if (options.ev !== undefined) $('ev').value = String(options.ev);
+    if (options.ev !== undefined) $('ev').value = options.ev === 'lowest' ? $('ev').min : options.ev === 'highest' ? $('ev').max : String(options.ev);
+    if (options.camera !== undefined) window.radbakeView.useCamera(options.camera);
     if (options.walk !== undefined) {
       $('walk').checked = options.walk;
       state.walk = options.walk;
