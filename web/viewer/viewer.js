@@ -365,6 +365,11 @@ function useCamera(gltfCamera) {
   camera.position.setFromMatrixPosition(gltfCamera.matrixWorld);
   camera.quaternion.setFromRotationMatrix(gltfCamera.matrixWorld);
   if (gltfCamera.isPerspectiveCamera) camera.fov = gltfCamera.fov;
+  // Its near plane, and a far one that reaches the whole scene (a model in millimetres is
+  // thousands of units across).
+  const size = new THREE.Box3().setFromObject(state.a.scene).getSize(new THREE.Vector3()).length();
+  camera.near = gltfCamera.near > 0 ? gltfCamera.near : size / 1000;
+  camera.far = Math.max(gltfCamera.far > 0 ? gltfCamera.far : 0, size * 10);
   camera.updateProjectionMatrix();
   controls.target.copy(camera.position).add(new THREE.Vector3(0, 0, -1).applyQuaternion(camera.quaternion));
   controls.update();
