@@ -133,7 +133,9 @@ std::optional<Bytes> CheckpointFolder::load(const std::string& stage) const {
     throw damaged("it is not a radbake checkpoint file of this version");
   if (h.fingerprint != fingerprint_)
     throw InputError("checkpoint " + clipped(file) + " was saved by a bake of another scene or other options");
-  if (uintmax_t(h.name_size) + h.payload_size != size - sizeof h) throw damaged("its size is not what its header says");
+  // Each size against the bytes that remain, never their sum: a payload size near 2^64 wraps it.
+  const uintmax_t body = size - sizeof h;
+  if (h.name_size > body || h.payload_size != body - h.name_size) throw damaged("its size is not what its header says");
   std::string name(h.name_size, '\0');
   Bytes payload(h.payload_size);
   in.read(name.data(), std::streamsize(name.size()));

@@ -4,6 +4,8 @@
 // header holds the time they were written). A checkpoint of another bake is refused.
 #include <gtest/gtest.h>
 
+#include <cstring>
+
 #include <OpenImageIO/imageio.h>
 
 #include <filesystem>
@@ -155,6 +157,20 @@ TEST(Distributed, ACheckpointOfAnotherBakeOrADamagedOneIsRefused) {
   std::ofstream(stage, std::ios::binary) << bytes;
   test::expect_one_line_refusal(radbake("bake " + kCornell + " -o " + dir + "/c" + kOptions + " --checkpoint " + dir + "/ckpt --resume"),
                                 "damaged: its checksum does not match", dir + "/c");
+  // Headers whose two sizes sum, wrapping past 2^64, to the bytes that follow them (issue 32): a
+  // name of 0xffffffff bytes, a payload of 2^64 - 1000. Refused before anything is allocated.
+  const uint64_t body = bytes.size() - 40;  // after the 40-byte header
+  const auto forged = [&](uint32_t name_size, uint64_t payload_size, const std::string& out) {
+    std::string copy = bytes;
+    std::memcpy(&copy[12], &name_size, 4);      // Header::name_size
+    std::memcpy(&copy[24], &payload_size, 8);   // Header::payload_size
+    std::ofstream(stage, std::ios::binary) << copy;
+    test::expect_one_line_refusal(radbake("bake " + kCornell + " -o " + out + kOptions + " --checkpoint " + dir + "/ckpt --resume"),
+                                  "damaged: its size is not what its header says", out);
+  };
+  forged(0xffffffffu, body - 0xffffffffu, dir + "/name_size");
+  forged(uint32_t(body + 1000), ~uint64_t(0) - 999, dir + "/payload_size");
+  std::ofstream(stage, std::ios::binary) << bytes;
   // Under mpirun too: one line from the first rank, a non-zero exit, no hang.
   Outcome team = test::run(mpirun(2) + "bake " + kCornell + " -o " + dir + "/d" + kOptions + " --checkpoint " + dir + "/ckpt --resume");
   EXPECT_NE(team.status, 0);
