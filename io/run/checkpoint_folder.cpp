@@ -9,10 +9,12 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "baker/sharing/byte_stream.h"
 #include "base/errors.h"
 #include "base/version.h"
+#include "io/files/regular_file.h"
 
 namespace radbake {
 namespace {
@@ -20,6 +22,7 @@ namespace {
 constexpr char kMagic[8] = {'r', 'a', 'd', 'b', 'a', 'k', 'e', 'C'};
 constexpr uint32_t kVersion = 1;
 const char* kManifest = "checkpoint.json";
+constexpr uint64_t kMostManifestBytes = 1 << 20;  // it holds a fingerprint, a scene's name and a version
 
 // FNV-1a, 64 bits: a checksum against damage and a fingerprint of inputs, not a defence against
 // someone forging a file (a checkpoint is the user's own).
@@ -71,12 +74,12 @@ CheckpointFolder::CheckpointFolder(std::string folder, uint64_t fingerprint, std
   fs::create_directories(folder_, error);
   if (!fs::is_directory(folder_)) throw InputError("checkpoint " + clipped(folder_) + ": cannot make the folder");
   const fs::path manifest = fs::path(folder_) / kManifest;
-  if (fs::exists(manifest)) {
+  std::error_code exists_error;
+  if (fs::exists(fs::symlink_status(manifest, exists_error))) {
     nlohmann::json m;
-    std::ifstream in(manifest);
     try {
-      in >> m;
-    } catch (const std::exception&) {
+      m = nlohmann::json::parse(read_regular_file(manifest.string(), "checkpoint manifest", kMostManifestBytes));
+    } catch (const nlohmann::json::exception&) {
       throw InputError("checkpoint " + clipped(folder_) + ": " + kManifest + " is damaged");
     }
     if (!m.is_object() || m.value("fingerprint", "") != hex(fingerprint))
@@ -123,12 +126,12 @@ void CheckpointFolder::save(const std::string& stage, const Bytes& state) {
 std::optional<Bytes> CheckpointFolder::load(const std::string& stage) const {
   const std::string file = file_of(stage);
   std::error_code error;
-  const uintmax_t size = std::filesystem::file_size(file, error);
-  if (error) return std::nullopt;
+  if (!std::filesystem::exists(std::filesystem::symlink_status(file, error))) return std::nullopt;
+  RegularFile in(file, "checkpoint");
+  const uint64_t size = in.size();
   auto damaged = [&](const std::string& why) { return InputError("checkpoint " + clipped(file) + " is damaged: " + why); };
   Header h{};
-  std::ifstream in(file, std::ios::binary);
-  if (size < sizeof h || !in.read(reinterpret_cast<char*>(&h), sizeof h)) throw damaged("it is shorter than its header");
+  if (size < sizeof h || !in.read(&h, sizeof h)) throw damaged("it is shorter than its header");
   if (std::memcmp(h.magic, kMagic, sizeof kMagic) != 0 || h.version != kVersion)
     throw damaged("it is not a radbake checkpoint file of this version");
   if (h.fingerprint != fingerprint_)
@@ -138,9 +141,8 @@ std::optional<Bytes> CheckpointFolder::load(const std::string& stage) const {
   if (h.name_size > body || h.payload_size != body - h.name_size) throw damaged("its size is not what its header says");
   std::string name(h.name_size, '\0');
   Bytes payload(h.payload_size);
-  in.read(name.data(), std::streamsize(name.size()));
-  in.read(reinterpret_cast<char*>(payload.data()), std::streamsize(payload.size()));
-  if (!in || name != stage) throw damaged("it holds another stage");
+  if (!in.read(name.data(), name.size()) || !in.read(payload.data(), payload.size()) || name != stage)
+    throw damaged("it holds another stage");
   Fnv sum;
   sum.add(payload.data(), payload.size());
   if (sum.h != h.checksum) throw damaged("its checksum does not match");
@@ -152,11 +154,17 @@ std::vector<std::string> CheckpointFolder::stages(const std::string& prefix) con
   std::error_code error;
   for (const auto& entry : std::filesystem::directory_iterator(folder_, error)) {
     if (entry.path().extension() != ".stage") continue;
-    std::ifstream in(entry.path(), std::ios::binary);
+    // What is no regular file is no stage here; load() refuses it by name.
+    std::optional<RegularFile> in;
+    try {
+      in.emplace(entry.path().string(), "checkpoint");
+    } catch (const InputError&) {
+      continue;
+    }
     Header h{};
-    if (!in.read(reinterpret_cast<char*>(&h), sizeof h) || h.name_size > 4096) continue;
+    if (!in->read(&h, sizeof h) || h.name_size > 4096) continue;
     std::string name(h.name_size, '\0');
-    if (in.read(name.data(), std::streamsize(name.size())) && name.rfind(prefix, 0) == 0) out.push_back(name);
+    if (in->read(name.data(), name.size()) && name.rfind(prefix, 0) == 0) out.push_back(name);
   }
   std::sort(out.begin(), out.end());
   return out;

@@ -6,6 +6,8 @@
 
 #include <cstring>
 
+#include <sys/stat.h>
+
 #include <OpenImageIO/imageio.h>
 
 #include <filesystem>
@@ -176,6 +178,29 @@ TEST(Distributed, ACheckpointOfAnotherBakeOrADamagedOneIsRefused) {
   EXPECT_NE(team.status, 0);
   EXPECT_NE(team.err.find("radbake: error: checkpoint"), std::string::npos) << team.err;
   EXPECT_FALSE(fs::exists(dir + "/d"));
+}
+
+// A FIFO where a checkpoint's file should be (issue 32, point 4): opened for reading, it would wait
+// for a writer for ever. --resume and merge refuse it in one line instead (timeout 60 turns a hang
+// into status 124).
+TEST(Distributed, ACheckpointFileThatIsAFifoIsRefusedNotWaitedOn) {
+  const std::string dir = test::fresh_folder("distributed_fifo");
+  const std::string ckpt = " --checkpoint " + dir + "/ckpt";
+  Outcome first = radbake("bake " + kCornell + kOptions + ckpt + " --stop-after direct-light");
+  ASSERT_EQ(first.status, 0) << first.err;
+  const std::string stage = dir + "/ckpt/direct_light_waves.stage";
+  fs::remove(stage);
+  ASSERT_EQ(mkfifo(stage.c_str(), 0600), 0);
+  const std::string bake = std::string("timeout 60 ") + RADBAKE_BINARY + " bake " + kCornell + kOptions + ckpt + " --resume -o ";
+  test::expect_one_line_refusal(test::run(bake + dir + "/a"), "is not a regular file", dir + "/a");
+  test::expect_one_line_refusal(test::run(std::string("timeout 60 ") + RADBAKE_BINARY + " merge " + kCornell + kOptions + ckpt +
+                                          " -o " + dir + "/m"),
+                                "", dir + "/m");
+  fs::remove(stage);
+  const std::string manifest = dir + "/ckpt/checkpoint.json";
+  fs::remove(manifest);
+  ASSERT_EQ(mkfifo(manifest.c_str(), 0600), 0);
+  test::expect_one_line_refusal(test::run(bake + dir + "/b"), "checkpoint manifest", dir + "/b");
 }
 
 TEST(Distributed, SlicesOfTheGatherJoinedByMergeAreTheWholeBake) {
