@@ -1,12 +1,15 @@
 #include "cli/share_folder.h"
 
 #include <string>
+#include <vector>
 
 #include "base/errors.h"
 
 namespace radbake {
 
 namespace fs = std::filesystem;
+
+namespace {
 
 std::vector<fs::path> share_folder_candidates() {
   std::error_code error;
@@ -15,6 +18,8 @@ std::vector<fs::path> share_folder_candidates() {
   const fs::path bin = executable.parent_path();
   return {bin.parent_path() / "share" / "radbake", bin / "share" / "radbake"};
 }
+
+}  // namespace
 
 fs::path viewer_share_folder() {
   std::string looked;

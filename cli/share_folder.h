@@ -5,15 +5,12 @@
 #pragma once
 
 #include <filesystem>
-#include <vector>
 
 namespace radbake {
 
-// The folders looked in, in that order, for the running executable.
-std::vector<std::filesystem::path> share_folder_candidates();
-
-// The first candidate that holds the viewer (web/viewer/index.html and three.js); else throws an
-// InputError naming where it looked.
+// ../share/radbake from the running executable's folder, then share/radbake beside it: the first
+// that holds the viewer (web/viewer/index.html and three.js); else throws an InputError naming
+// where it looked.
 std::filesystem::path viewer_share_folder();
 
 }  // namespace radbake

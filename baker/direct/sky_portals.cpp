@@ -91,6 +91,7 @@ PortalView::Cone cone_from(Vec3 from, const Vec3* c, uint32_t t, double seen) {
   cone.cos_alpha = std::cos(cone.alpha), cone.sin_alpha = std::sin(cone.alpha);
   cone.solid_angle = seen;
   cone.cos_ab = dot(a, b);
+  put(cone.normal, unit(cross(as_dir(c[1]) - as_dir(c[0]), as_dir(c[2]) - as_dir(c[0]))));
   return cone;
 }
 
@@ -111,8 +112,8 @@ PortalView::PortalView(const SkyPortals& portals, Vec3 at, Vec3 normal, float re
     const double seen = solid_angle(at, corner);
     if (!(seen > kLeastSolidAngle)) continue;
     Cone cone = cone_from(at, corner, t, seen);
-    const Vec3 plane = normalize(cross(corner[1] - corner[0], corner[2] - corner[0]));
-    cone.near = std::fabs(dot(at - corner[0], plane)) < kNearInReaches * reach;
+    const Dir plane{cone.normal[0], cone.normal[1], cone.normal[2]};
+    cone.near = std::fabs(dot(as_dir(at) - as_dir(corner[0]), plane)) < kNearInReaches * reach;
     // The light a window could bring goes with its solid angle and the cosine toward it; the
     // cosine's floor keeps a window that rises from the surface's plane in reach.
     const Vec3 centre = (corner[0] + corner[1] + corner[2]) / 3.0f;
@@ -139,7 +140,7 @@ Vec3 PortalView::aim(Vec3 from, Vec2 u) const {
   }
   const Dir d = sample_spherical_triangle(cone, {within, u.y});
   // The point of the triangle's plane the centre's ray reaches, seen from `from`.
-  const Dir n = cross(as_dir(corner[1]) - as_dir(corner[0]), as_dir(corner[2]) - as_dir(corner[0]));
+  const Dir n{cone.normal[0], cone.normal[1], cone.normal[2]};
   const double along = dot(n, d);
   if (along == 0) return normalize(Vec3{float(d.x), float(d.y), float(d.z)});
   const Dir point = as_dir(at_) + d * (dot(n, as_dir(corner[0]) - as_dir(at_)) / along);
@@ -161,7 +162,7 @@ double PortalView::density(Vec3 from, Vec3 d) const {
     }
     // Per steradian from `at`, to per square metre of the glazing, to per steradian from `from`.
     const Dir point = origin + dir * distance, from_centre = point - as_dir(at_);
-    const Dir n = unit(cross(as_dir(corner[1]) - as_dir(corner[0]), as_dir(corner[2]) - as_dir(corner[0])));
+    const Dir n{cone.normal[0], cone.normal[1], cone.normal[2]};
     const double centre_distance2 = dot(from_centre, from_centre);
     const double facing_centre = std::fabs(dot(n, from_centre)) / std::sqrt(centre_distance2);
     const double facing = std::fabs(dot(n, dir));

@@ -64,6 +64,7 @@ class PortalView {
   struct Cone {
     uint32_t triangle;
     double a[3], b[3], c[3];
+    double normal[3];  // the triangle's plane, unit
     double solid_angle, alpha, cos_alpha, sin_alpha, cos_ab, share, cumulative;
     bool near;  // aimed at from each ray's own origin
   };

@@ -336,6 +336,12 @@ function frame(root) {
   controls.update();
 }
 
+// The diagonal of bake A's scene, worked out once (walking asks it every frame).
+function sceneSize() {
+  state.a.size ??= new THREE.Box3().setFromObject(state.a.scene).getSize(new THREE.Vector3()).length();
+  return state.a.size;
+}
+
 // The view a person wants first: the glTF's first camera; else the one radbake chose for the
 // display file (report.json display.camera_view: inside the largest room, or outside looking at the
 // model); else the whole scene framed.
@@ -347,7 +353,7 @@ function firstView() {
 }
 
 function useView(view) {
-  const size = new THREE.Box3().setFromObject(state.a.scene).getSize(new THREE.Vector3()).length();
+  const size = sceneSize();
   const eye = new THREE.Vector3(...view.eye), forward = new THREE.Vector3(...view.forward).normalize();
   camera.position.copy(eye);
   camera.fov = (view.yfov * 180) / Math.PI;
@@ -367,7 +373,7 @@ function useCamera(gltfCamera) {
   if (gltfCamera.isPerspectiveCamera) camera.fov = gltfCamera.fov;
   // Its near plane, and a far one that reaches the whole scene (a model in millimetres is
   // thousands of units across).
-  const size = new THREE.Box3().setFromObject(state.a.scene).getSize(new THREE.Vector3()).length();
+  const size = sceneSize();
   camera.near = gltfCamera.near > 0 ? gltfCamera.near : size / 1000;
   camera.far = Math.max(gltfCamera.far > 0 ? gltfCamera.far : 0, size * 10);
   camera.updateProjectionMatrix();
@@ -387,7 +393,7 @@ canvas.addEventListener('pointermove', (e) => {
   camera.quaternion.setFromEuler(euler);
 });
 function walk(seconds) {
-  const size = new THREE.Box3().setFromObject(state.a.scene).getSize(new THREE.Vector3()).length();
+  const size = sceneSize();
   const ahead = new THREE.Vector3(0, 0, -1).applyQuaternion(camera.quaternion).setY(0).normalize();
   const right = new THREE.Vector3().crossVectors(ahead, new THREE.Vector3(0, 1, 0));
   const step = new THREE.Vector3();
