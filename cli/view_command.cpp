@@ -9,16 +9,16 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <memory>
 #include <nlohmann/json.hpp>
-#include <sstream>
 #include <thread>
 
 #include "base/errors.h"
+#include "cli/connection_guard.h"
 #include "cli/interrupts.h"
 #include "cli/served_files.h"
 #include "cli/share_folder.h"
+#include "io/files/regular_file.h"
 
 extern char** environ;
 
@@ -40,27 +40,41 @@ const char* content_type(const fs::path& file) {
   return "application/octet-stream";  // .bin, .exr
 }
 
-std::string slurp(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream out;
-  out << in.rdbuf();
-  return out.str();
+// One range a request, inside the file. Several ranges multiplied what one request cost (cpp-httplib
+// 0.11 answered 200 ranges "0-" of a 5 MB file with 1 GB), and its multipart answers from a content
+// provider are wrong besides (every part's total "/0", an open end sent as 2^64 - 1). Browsers and
+// the page ask for one range at a time. An end past the file's is refused too, where RFC 9110 would
+// cut it short: httplib 0.11 would promise the bytes up to it.
+bool one_range_inside(const httplib::Ranges& asked, uint64_t size) {
+  if (asked.size() != 1) return false;
+  const auto [first, last] = asked.front();
+  if (first < 0) return last > 0;  // "-N": the last N bytes
+  return uint64_t(first) < size && (last < 0 || (last >= first && uint64_t(last) < size));
 }
 
-// A file as it is sent: read in chunks as the connection takes them, never whole, and never
-// compressed. The server listens on 127.0.0.1 only, where compressing costs the server more time
-// than the bytes it saves (brotli took 2.35 CPU s for three.core.js, per request). Its ETag (size
-// and modification time) lets a browser revalidate what it holds with one request; "no-cache"
-// makes it ask, so a rebaked folder shows its new files.
+// A file as it is sent: opened as a regular file with one name (a hard link made in the folder to
+// a file elsewhere would let the page read it), read in chunks as the connection takes them, never
+// whole, and never compressed. The server listens on 127.0.0.1 only, where compressing costs the
+// server more time than the bytes it saves (brotli took 2.35 CPU s for three.core.js, per
+// request). Its ETag (size and modification time) lets a browser revalidate what it holds with one
+// request; "no-cache" makes it ask, so a rebaked folder shows its new files.
 void send_file(const fs::path& path, const httplib::Request& request, httplib::Response& response) {
-  std::error_code error;
-  const uintmax_t size = fs::file_size(path, error);
-  const auto modified = fs::last_write_time(path, error).time_since_epoch().count();
-  if (error) {
+  std::shared_ptr<RegularFile> file;
+  try {
+    file = std::make_shared<RegularFile>(path.string(), "served file");
+  } catch (const InputError&) {
     response.status = 404;
     response.set_content("not found\n", "text/plain");
     return;
   }
+  if (file->links() > 1) {
+    response.status = 403;
+    response.set_content("forbidden: the file has another name elsewhere (a hard link)\n", "text/plain");
+    return;
+  }
+  const uint64_t size = file->size();
+  std::error_code error;
+  const auto modified = fs::last_write_time(path, error).time_since_epoch().count();
   const std::string tag = "\"" + std::to_string(size) + "-" + std::to_string(modified) + "\"";
   response.set_header("ETag", tag);
   response.set_header("Cache-Control", "no-cache");
@@ -68,18 +82,20 @@ void send_file(const fs::path& path, const httplib::Request& request, httplib::R
     response.status = 304;
     return;
   }
+  if (!request.ranges.empty() && !one_range_inside(request.ranges, size)) {
+    response.status = 416;
+    response.set_header("Content-Range", "bytes */" + std::to_string(size));
+    return;
+  }
   if (size == 0) {
     response.set_content("", content_type(path));
     return;
   }
-  auto file = std::make_shared<std::ifstream>(path, std::ios::binary);
   response.set_content_provider(size_t(size), content_type(path),
                                 [file](size_t offset, size_t length, httplib::DataSink& sink) {
                                   char chunk[1 << 16];
-                                  file->seekg(std::streamoff(offset));
-                                  file->read(chunk, std::streamsize(std::min(length, sizeof chunk)));
-                                  const std::streamsize got = file->gcount();
-                                  return got > 0 && sink.write(chunk, size_t(got));
+                                  const size_t bytes = std::min(length, sizeof chunk);
+                                  return file->read_at(offset, chunk, bytes) && sink.write(chunk, bytes);
                                 });
 }
 
@@ -100,7 +116,8 @@ void serve_folder(httplib::Server& server, const std::string& prefix, const fs::
 nlohmann::json bakes_json(const std::vector<fs::path>& folders) {
   nlohmann::json out = nlohmann::json::array();
   for (size_t k = 0; k < folders.size(); ++k) {
-    nlohmann::json report = nlohmann::json::parse(slurp(folders[k] / "report.json"), nullptr, false);
+    nlohmann::json report = nlohmann::json::parse(
+        read_regular_file((folders[k] / "report.json").string(), "report", kMostReportBytes), nullptr, false);
     if (!report.is_object())
       throw InputError("'" + clipped(folders[k].string()) + "/report.json' is not a radbake report (not a JSON object)");
     std::string name;
@@ -137,6 +154,8 @@ int run_view(const ViewCommand& command) {
   const fs::path web = viewer_share_folder() / "web";
 
   httplib::Server server;
+  ConnectionGuard(ConnectionLimits{}).guard(server);
+  server.set_payload_max_length(1 << 16);  // the page only asks: no request carries a body
   server.Get("/favicon.ico", [](const httplib::Request&, httplib::Response& response) { response.status = 204; });
   server.Get("/", [&](const httplib::Request& request, httplib::Response& response) {
     send_file(web / "viewer" / "index.html", request, response);

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "base/errors.h"
+#include "io/files/regular_file.h"
 #include "io/lightmaps/lightmap_images.h"
 
 namespace radbake {
@@ -86,8 +87,7 @@ ReadingSummary summarise(const std::vector<double>& values, const std::vector<do
 }
 
 std::vector<Sensor> read_sensor_csv(const std::string& path, size_t max_points) {
-  std::ifstream in(path);
-  if (!in) throw InputError("cannot read the sensor file '" + clipped(path) + "'");
+  std::istringstream in(read_regular_file(path, "sensor file", kMostSensorFileBytes));
   std::vector<Sensor> sensors;
   std::string line;
   bool header_seen = false;

@@ -9,16 +9,17 @@
 #include <sstream>
 
 #include "base/errors.h"
+#include "io/files/regular_file.h"
 #include "io/lightmaps/lightmap_images.h"
 
 namespace radbake {
 namespace {
 
 nlohmann::json read_report(const std::string& folder) {
-  std::ifstream in(folder + "/report.json");
-  if (!in) return nullptr;
   try {
-    return nlohmann::json::parse(in);
+    return nlohmann::json::parse(read_regular_file(folder + "/report.json", "report", kMostReportBytes));
+  } catch (const InputError&) {
+    return nullptr;
   } catch (const nlohmann::json::exception&) {
     return nullptr;
   }
@@ -47,8 +48,7 @@ AnnualFolder read_annual_folder(const std::string& folder) {
         if (view.contains(key) && view[key].is_number())
           f.metrics.push_back({"view_" + std::to_string(v) + "_" + key, view[key].get<double>()});
     }
-  std::ifstream csv(folder + "/annual_sensors.csv");
-  if (!csv) throw InputError(folder + " has no annual_sensors.csv");
+  std::istringstream csv(read_regular_file(folder + "/annual_sensors.csv", "annual sensor file", kMostSensorFileBytes));
   std::string line;
   std::getline(csv, line);
   for (size_t row = 2; std::getline(csv, line); ++row) {

@@ -8,11 +8,12 @@
 #include <vector>
 
 #include "base/errors.h"
+#include "io/files/regular_file.h"
 
 namespace radbake {
 namespace {
 
-constexpr std::streamoff kMostBytes = 64ll << 20;  // a year of EPW is about 1.6 MB
+constexpr uint64_t kMostBytes = 64ull << 20;  // a year of EPW is about 1.6 MB
 constexpr int kHeaderLines = 8;                     // LOCATION .. DATA PERIODS
 
 std::vector<std::string> fields_of(const std::string& line) {
@@ -53,10 +54,7 @@ struct LineReader {
 }  // namespace
 
 Weather read_epw(const std::string& path) {
-  std::ifstream file(path, std::ios::binary | std::ios::ate);
-  if (!file) throw InputError("cannot read weather file " + path);
-  if (file.tellg() > kMostBytes) throw InputError("weather file " + path + " is over 64 MB: not a year of EPW weather");
-  file.seekg(0);
+  std::istringstream file(read_regular_file(path, "weather file", kMostBytes));
   Weather weather;
   LineReader reader{path};
   std::string line;

@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "base/errors.h"
+#include "io/files/regular_file.h"
 #include "io/gltf/gltf_source.h"
 
 namespace radbake {
@@ -95,7 +96,9 @@ class Resolver {
                              "(--allow-external-files reads it)");
     std::error_code ec;
     fs::path found = fs::canonical(lexical, ec);
-    if (ec || !fs::is_regular_file(found, ec)) return {};
+    if (ec) return {};
+    if (!fs::is_regular_file(found, ec))
+      refuse(file_, pointer, "URI '" + clipped(uri) + "' is not a regular file (a FIFO, a device or a folder)");
     if (!allow_external_ && !inside(found, base_))
       refuse(file_, pointer, "URI '" + clipped(uri) + "' is a link to a file outside the scene's folder "
                              "(--allow-external-files reads it)");
@@ -143,13 +146,18 @@ std::string expand_path(const std::string& path, void* user) {
 bool file_exists(const std::string& path, void* user) { return file_of(path, *static_cast<const FileAccess*>(user)); }
 
 bool read_whole_file(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
-  if (!file_of(path, *static_cast<const FileAccess*>(user))) {
+  FileAccess& access = *static_cast<FileAccess*>(user);
+  if (!file_of(path, access)) {
     if (err) *err = "not a file of this scene";
     return false;
   }
-  std::ifstream in(path, std::ios::binary);
-  out->assign(std::istreambuf_iterator<char>(in), {});
-  return bool(in) || in.eof();
+  try {
+    *out = read_regular_bytes(path, "file", memory_limit(access.max_memory_bytes));
+  } catch (const InputError& e) {
+    access.error = access.file + ": " + e.what();
+    return false;
+  }
+  return true;
 }
 
 bool write_whole_file(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {

@@ -8,6 +8,7 @@
 #include <set>
 
 #include "base/errors.h"
+#include "io/files/regular_file.h"
 #include "io/gltf/gltf_check.h"
 #include "io/gltf/gltf_source.h"
 #include "io/gltf/image_repair.h"
@@ -32,12 +33,6 @@ std::string one_line(std::string text) {
   std::replace(text.begin(), text.end(), '\n', ' ');
   while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.pop_back();
   return clipped(text, 300);
-}
-
-std::vector<uint8_t> read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(clipped(path) + ": cannot open file");
-  return std::vector<uint8_t>(std::istreambuf_iterator<char>(in), {});
 }
 
 // Counted without recursion, so the count itself cannot overflow the stack.
@@ -630,7 +625,8 @@ LoadedScene load_gltf(const std::string& path, const LoadOptions& options) {
   src->path = path;
   src->base_dir = fs::path(path).parent_path().string();
   LoadedScene out;
-  std::vector<uint8_t> bytes = read_file(path);
+  std::vector<uint8_t> bytes =
+      read_regular_bytes(path, "scene", std::min<uint64_t>(0xffffffffu, memory_limit(options.max_memory_bytes)));
   src->binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
   if (src->binary) split_glb(bytes, path, *src);
   else src->json_text.assign(bytes.begin(), bytes.end()), bytes = {};

@@ -51,6 +51,9 @@ void restrict_file_access(tinygltf::TinyGLTF& loader, FileAccess& access);
 // image/webp (the formats glTF and EXT_texture_webp allow), or empty for anything else.
 std::string image_type(const unsigned char* bytes, size_t size);
 
+// What --max-memory allows: its value, or half the physical memory when it is 0 (auto).
+uint64_t memory_limit(uint64_t max_memory_bytes);
+
 // Throws InputError naming the estimate and the option to raise when it passes a limit.
 void check_budget(const ResourceEstimate& estimate, const LoadOptions& options, const std::string& file);
 

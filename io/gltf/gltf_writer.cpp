@@ -16,6 +16,7 @@
 
 #include "baker/finish/prelit_pages.h"
 #include "base/errors.h"
+#include "io/files/regular_file.h"
 #include "io/gltf/gltf_binary.h"
 #include "io/gltf/gltf_prune.h"
 #include "io/gltf/gltf_source.h"
@@ -28,6 +29,9 @@ namespace {
 
 using json = nlohmann::ordered_json;
 namespace fs = std::filesystem;
+
+// The most an image file may hold to be copied (the scene's own file may hold no more).
+constexpr uint64_t kMostImageFileBytes = 0xffffffffu;
 
 void write_bytes(const fs::path& path, const uint8_t* data, size_t size) {
   std::ofstream out(path, std::ios::binary);
@@ -198,27 +202,23 @@ class Writer {
       // Named for what the bytes are (a PNG named .webp is repaired as a PNG).
       const std::string& type = src_.image_types[i];
       std::string file = name_ + "_image" + std::to_string(i) + (type == "image/jpeg" ? ".jpg" : "." + type.substr(6));
-      std::error_code ec;
-      if (from.empty()) ec = std::make_error_code(std::errc::no_such_file_or_directory);
-      else if (type == "image/png") copy_plain_png(from, folder_ / file, "/images/" + std::to_string(i), ec);
-      else fs::copy_file(from, folder_ / file, fs::copy_options::overwrite_existing, ec);
-      if (ec) {
-        out_.warnings.push_back("image '" + clipped(uri) + "' could not be copied: " + ec.message());
+      std::string bytes;
+      try {
+        if (from.empty()) throw InputError("its file was not found");
+        // Read again as it was first read: a regular file, bounded (the loader decoded it whole).
+        bytes = read_regular_file(from.string(), "image", kMostImageFileBytes);
+      } catch (const InputError& e) {
+        out_.warnings.push_back("image '" + clipped(uri) + "' could not be copied: " + e.what());
         continue;
       }
+      if (type == "image/png") {
+        const std::string warning = make_png_plain(bytes, "/images/" + std::to_string(i));
+        if (!warning.empty()) out_.warnings.push_back(warning);
+      }
+      write_bytes(folder_ / file, reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size());
       images[i]["uri"] = file;
       out_.written_files.push_back(file);
     }
-  }
-
-  void copy_plain_png(const fs::path& from, const fs::path& to, const std::string& pointer, std::error_code& ec) {
-    std::ifstream in(from, std::ios::binary);
-    std::string png((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (!in && !in.eof()) return ec.assign(EIO, std::generic_category());
-    const std::string warning = make_png_plain(png, pointer);
-    if (warning.empty()) return fs::copy_file(from, to, fs::copy_options::overwrite_existing, ec), void();
-    write_bytes(to, reinterpret_cast<const uint8_t*>(png.data()), png.size());
-    out_.warnings.push_back(warning);
   }
 
   // No mipmaps: a chart's neighbours are a few texels away, and mip levels average them in (see

@@ -38,6 +38,10 @@ uint64_t saturated(double v) { return v >= 1.8e19 ? UINT64_MAX : uint64_t(v); }
 
 }  // namespace
 
+uint64_t memory_limit(uint64_t max_memory_bytes) {
+  return max_memory_bytes == 0 ? physical_memory() / 2 : max_memory_bytes;
+}
+
 uint64_t ResourceEstimate::bytes() const {
   return saturated(double(kBaselineBytes) + double(data_bytes) + double(triangles) * kBytesPerTriangle +
                    double(vertices) * kBytesPerVertex + double(texels) * kBytesPerTexel);
@@ -48,7 +52,7 @@ void check_budget(const ResourceEstimate& e, const LoadOptions& options, const s
     refuse(file, "/", "the scene has " + std::to_string(e.triangles) + " triangles after instancing, more than " +
                           "--max-triangles " + std::to_string(options.max_triangles) + " allows (raise it to bake it)");
   const bool automatic = options.max_memory_bytes == 0;
-  const uint64_t limit = automatic ? physical_memory() / 2 : options.max_memory_bytes;
+  const uint64_t limit = memory_limit(options.max_memory_bytes);
   if (e.bytes() > limit)
     refuse(file, "/", "the bake would need about " + gigabytes(e.bytes()) + " (" + std::to_string(e.triangles) +
                           " triangles, " + std::to_string(e.texels) + " lightmap texels, " + gigabytes(e.data_bytes) +

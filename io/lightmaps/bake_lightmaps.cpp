@@ -1,13 +1,13 @@
 #include "io/lightmaps/bake_lightmaps.h"
 
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <set>
 
 #include "base/errors.h"
+#include "io/files/regular_file.h"
 #include "io/lightmaps/lightmap_images.h"
 
 namespace radbake {
@@ -42,8 +42,8 @@ std::map<size_t, fs::path> find_pages(const fs::path& folder) {
 }
 
 void read_quantity(const fs::path& report_path, BakeLightmaps& out) {
-  std::ifstream in(report_path);
-  nlohmann::json report = nlohmann::json::parse(in, nullptr, false);
+  nlohmann::json report =
+      nlohmann::json::parse(read_regular_file(report_path.string(), "report", kMostReportBytes), nullptr, false);
   if (report.is_discarded() || !report.contains("lightmaps") || !report["lightmaps"].contains("unit") ||
       !report["lightmaps"]["unit"].is_string() || !report["lightmaps"].value("quantity", nlohmann::json()).is_string())
     throw InputError(report_path.string() + " is not a radbake report (no lightmaps.quantity and .unit)");

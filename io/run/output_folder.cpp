@@ -13,6 +13,7 @@
 #include <set>
 
 #include "base/errors.h"
+#include "io/files/regular_file.h"
 
 namespace radbake {
 namespace fs = std::filesystem;
@@ -27,8 +28,13 @@ std::string obstacle(const fs::path& target, const std::string& shown) {
   const std::string not_ours = "output folder " + shown + " exists and is not a radbake output; choose another or remove it";
   if (!fs::is_directory(target, ec)) return not_ours;
   if (fs::is_empty(target, ec)) return "";
-  std::ifstream in(target / "report.json");
-  const nlohmann::json report = nlohmann::json::parse(in, nullptr, false);
+  nlohmann::json report;
+  try {
+    report = nlohmann::json::parse(read_regular_file((target / "report.json").string(), "report", kMostReportBytes), nullptr,
+                                   false);
+  } catch (const InputError&) {
+    return not_ours;  // none, or not a regular file
+  }
   if (!report.is_object() || !report.contains("generator") || report["generator"] != "radbake") return not_ours;
   if (!report.contains("files") || !report["files"].is_array())
     return "output folder " + shown + " is from a radbake that did not list the files it wrote; remove it or choose another";

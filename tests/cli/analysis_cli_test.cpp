@@ -161,7 +161,7 @@ INSTANTIATE_TEST_SUITE_P(
         Refused{"csv_with_nan", "--sky uniform", "1,2,nan\n", "line 1: a sensor is"},
         Refused{"csv_with_a_zero_normal", "--sky uniform", "1,2,3,0,0,0\n", "line 1: the sensor's normal is zero"},
         Refused{"csv_empty", "--sky uniform", "# nothing\n", "holds no sensor"},
-        Refused{"csv_missing", "--sky uniform --sensors /nonexistent/sensors.csv", "", "cannot read the sensor file"},
+        Refused{"csv_missing", "--sky uniform --sensors /nonexistent/sensors.csv", "", "sensor file '/nonexistent/sensors.csv' cannot be opened"},
         Refused{"work_plane_too_fine", "--quiet --sky uniform --work-plane --work-plane-spacing 0.001", "",
                 "raise --work-plane-spacing"},
         Refused{"work_plane_over_nothing", "--quiet --sky uniform --work-plane --work-plane-over desk", "",

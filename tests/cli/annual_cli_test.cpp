@@ -117,7 +117,7 @@ TEST(AnnualCli, WhatAYearCannotBeRunWithIsOneLine) {
   test::expect_one_line_refusal(test::radbake("bake " + scene + " -o " + out + weather + " --work-plane --occupied 18-8"),
                                 "--occupied must end after it starts", out);
   test::expect_one_line_refusal(test::radbake("bake " + scene + " -o " + out + " --work-plane --weather " + folder + "/none.epw"),
-                                "cannot read weather file", out);
+                                "weather file '" + folder + "/none.epw' cannot be opened", out);
 }
 
 TEST(AnnualCli, DiffRefusesYearsItCannotCompareWithOneLine) {
@@ -136,7 +136,7 @@ TEST(AnnualCli, DiffRefusesYearsItCannotCompareWithOneLine) {
   std::ofstream(root + "/bake/report.json") << R"({"lightmaps": {}})";
   const struct {
     std::string a, b, says;
-  } cases[] = {{one, bare, "has no annual_sensors.csv"},
+  } cases[] = {{one, bare, "annual_sensors.csv' cannot be opened"},
                {one, two, "were measured at different sensors (1 and 2)"},
                {one, root + "/bake", "is a year of daylight and the other a bake"}};
   for (const auto& c : cases)

@@ -4,8 +4,12 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <sys/stat.h>
+
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <nlohmann/json.hpp>
 
 #include "io/lightmaps/lightmap_images.h"
@@ -92,6 +96,38 @@ TEST(Diff, DifferenceImagesShowWhereAndWhichWay) {
   }
 }
 
+// A FIFO at `path` (which it returns), as a reader would find it: no writer, so opening it to read
+// blocks for ever unless it is opened without blocking.
+std::string fifo(const std::string& path) {
+  EXPECT_EQ(mkfifo(path.c_str(), 0600), 0) << path;
+  return path;
+}
+
+// A folder whose one page, x_lightmap_0.exr, `make` puts there.
+std::string folder_with_page(const std::string& folder, const std::function<void(const std::string&)>& make) {
+  std::filesystem::create_directories(folder);
+  make(folder + "/x_lightmap_0.exr");
+  return folder;
+}
+
+// A copy of `bake`'s page 0 whose header claims width x height texels (its data and display
+// windows rewritten; the pixels stay 8 x 8).
+std::string page_claiming(const std::string& bake, const std::string& parent, int32_t width, int32_t height) {
+  std::ifstream in(bake + "/room_lightmap_0.exr", std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  for (const std::string attribute : {"dataWindow", "displayWindow"}) {
+    const size_t at = bytes.find(attribute + std::string("\0box2i\0", 7));
+    EXPECT_NE(at, std::string::npos) << attribute;
+    if (at == std::string::npos) continue;
+    const int32_t box[4] = {0, 0, width - 1, height - 1};
+    std::memcpy(&bytes[at + attribute.size() + 7 + 4], box, sizeof box);  // after the name, the type and the size
+  }
+  std::filesystem::create_directories(parent + "/huge");
+  const std::string out = parent + "/huge/huge_lightmap_0.exr";
+  std::ofstream(out, std::ios::binary) << bytes;
+  return out;
+}
+
 class DiffBadInput : public ::testing::TestWithParam<std::pair<std::string, std::string>> {};
 
 TEST_P(DiffBadInput, ExitsTwoWithOneErrorLine) {
@@ -99,18 +135,35 @@ TEST_P(DiffBadInput, ExitsTwoWithOneErrorLine) {
   // A folder per case: ctest runs the cases in parallel, and a shared one was remade under another.
   const std::string a = bake_folder("diff_bad_a_" + GetParam().first, {{8, 100}});
   std::ofstream(parent + "/junk_lightmap_0.exr") << "not an image";
-  const std::map<std::string, std::string> args = {
-      {"missing", a + " " + parent + "/nothing"},
-      {"unreadable", a + " " + parent},
-      {"unknown_option", a + " " + a + " --max-rsme 3"},
-      {"bad_number", a + " " + a + " --max-rmse three"},
-      {"one_bake", a},
-      {"three_bakes", a + " " + a + " " + a},
-      {"page_size", a + " " + bake_folder("diff_bad_size", {{16, 100}})},
-      {"page_count", a + " " + bake_folder("diff_bad_count", {{8, 100}, {8, 100}})},
-      {"quantity", a + " " + bake_folder("diff_bad_quantity", {{8, 100}}, "radiosity", "lm/m2")},
+  // Made only for the case that runs: another case's folders are remade by its own process.
+  const std::string other = parent + "/other";
+  const std::map<std::string, std::function<std::string()>> args = {
+      {"missing", [&] { return a + " " + parent + "/nothing"; }},
+      {"unreadable", [&] { return a + " " + parent; }},
+      {"unknown_option", [&] { return a + " " + a + " --max-rsme 3"; }},
+      {"bad_number", [&] { return a + " " + a + " --max-rmse three"; }},
+      {"one_bake", [&] { return a; }},
+      {"three_bakes", [&] { return a + " " + a + " " + a; }},
+      {"page_size", [&] { return a + " " + bake_folder("diff_bad_size", {{16, 100}}); }},
+      {"page_count", [&] { return a + " " + bake_folder("diff_bad_count", {{8, 100}, {8, 100}}); }},
+      {"quantity", [&] { return a + " " + bake_folder("diff_bad_other_quantity", {{8, 100}}, "radiosity", "lm/m2"); }},
+      // Issue 32, point 3: each of these took diff down (std::bad_alloc) or hung it.
+      {"huge_header", [&] { return a + " " + page_claiming(a, parent, 65536, 65536); }},
+      {"dev_zero", [&] { return a + " /dev/zero"; }},
+      {"fifo", [&] { return a + " " + fifo(parent + "/pipe.exr"); }},
+      {"fifo_page", [&] { return a + " " + folder_with_page(other, [](const std::string& page) { fifo(page); }); }},
+      {"link_to_dev_zero", [&] {
+         return a + " " + folder_with_page(other, [](const std::string& page) {
+                  std::filesystem::create_symlink("/dev/zero", page);
+                });
+       }},
+      {"link_to_fifo", [&] {
+         return a + " " + folder_with_page(other, [&](const std::string& page) {
+                  std::filesystem::create_symlink(fifo(parent + "/another_pipe"), page);
+                });
+       }},
   };
-  Outcome r = radbake("diff " + args.at(GetParam().first));
+  Outcome r = radbake("diff " + args.at(GetParam().first)());
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.err.rfind("radbake: error: ", 0), 0u) << r.err;
   EXPECT_NE(r.err.find(GetParam().second), std::string::npos) << r.err;
@@ -121,14 +174,20 @@ TEST_P(DiffBadInput, ExitsTwoWithOneErrorLine) {
 INSTANTIATE_TEST_SUITE_P(
     Cases, DiffBadInput,
     ::testing::Values(std::make_pair("missing", "nothing does not exist"),
-                      std::make_pair("unreadable", "cannot read"),
+                      std::make_pair("unreadable", "junk_lightmap_0.exr is not an OpenEXR lightmap page (no OpenEXR signature)"),
                       std::make_pair("unknown_option", "unknown option --max-rsme"),
                       std::make_pair("bad_number", "--max-rmse needs a number"),
                       std::make_pair("one_bake", "missing bakes to compare"),
                       std::make_pair("three_bakes", "unexpected argument"),
                       std::make_pair("page_size", "page 0 is 8x8 in the reference but 16x16 in the other bake"),
                       std::make_pair("page_count", "different page counts: 1 in the reference, 2 in the other bake"),
-                      std::make_pair("quantity", "holds irradiance (lx) but")),
+                      std::make_pair("quantity", "holds irradiance (lx) but"),
+                      std::make_pair("huge_header", "claims 65536 x 65536 texels; radbake's lightmap pages are 1 to 16384"),
+                      std::make_pair("dev_zero", "'/dev/zero' is not a regular file"),
+                      std::make_pair("fifo", "pipe.exr' is not a regular file"),
+                      std::make_pair("fifo_page", "x_lightmap_0.exr' is not a regular file"),
+                      std::make_pair("link_to_dev_zero", "x_lightmap_0.exr' is not a regular file"),
+                      std::make_pair("link_to_fifo", "x_lightmap_0.exr' is not a regular file")),
     [](const auto& info) { return info.param.first; });
 
 TEST(Diff, HelpDefinesTheStatistics) {
