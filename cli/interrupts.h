@@ -15,7 +15,8 @@ namespace radbake {
 
 class StagedFolder;
 
-// Starts the watcher. Call first in main, before any thread exists: threads inherit the mask.
+// Starts the watcher. Call first in main. The signals are blocked from before main (threads
+// inherit the mask), so one sent while radbake starts waits for the watcher.
 void watch_interrupts();
 
 bool interrupted();
