@@ -1,5 +1,5 @@
-// Two kinds of failure: bad input is the user's (a clear message, exit status 2); anything else
-// is ours (exit status 1). Invariants inside the core are asserts, not exceptions.
+// Two kinds of failure: bad input and a disk that takes no more are the user's (a clear message,
+// exit status 2); anything else is ours (exit status 1). Invariants inside the core are asserts, not exceptions.
 #pragma once
 
 #include <stdexcept>
@@ -8,6 +8,12 @@
 namespace radbake {
 
 struct InputError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// An output that could not be written: the user's disk (full, read-only, no permission), exit
+// status 2 like bad input. The message names the file and why, in radbake's words.
+struct OutputError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 

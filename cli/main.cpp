@@ -504,6 +504,8 @@ int main(int argc, char** argv) {
     return fail(e, 2, true);
   } catch (const InputError& e) {
     return fail(e, 2, true);
+  } catch (const OutputError& e) {
+    return fail(e, 2, false);
   } catch (const TruncatedBytes& e) {
     (void)e;
     return fail(InputError("the checkpoint holds a stage that ends early (saved by another radbake?): remove the folder"), 2, true);

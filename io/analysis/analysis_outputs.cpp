@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "base/errors.h"
+#include "io/files/written_file.h"
 #include "io/files/regular_file.h"
 #include "io/lightmaps/lightmap_images.h"
 
@@ -162,7 +163,7 @@ AnalysisFiles write_analysis(const BakeResult& result, const std::string& folder
       }
       csv << "\n";
     }
-    if (!csv) throw std::runtime_error("cannot write " + folder + "/sensors.csv");
+    close_written(csv, folder + "/sensors.csv");
     out.files.push_back("sensors.csv");
     // The listed sensors come first, the work plane's after them; each set has its own summary.
     const ptrdiff_t listed_count = ptrdiff_t(lux.size() - result.work_plane.sensors.size());
@@ -238,7 +239,7 @@ AnalysisFiles write_analysis(const BakeResult& result, const std::string& folder
       csv << "\n";
       out.rooms.push_back(r);
     }
-    if (!csv) throw std::runtime_error("cannot write " + folder + "/work_plane_rooms.csv");
+    close_written(csv, folder + "/work_plane_rooms.csv");
     out.files.push_back("work_plane_rooms.csv");
   }
   for (size_t v = 0; v < result.views.size(); ++v) {

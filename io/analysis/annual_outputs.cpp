@@ -8,21 +8,18 @@
 #include <tuple>
 
 #include "io/analysis/analysis_outputs.h"
+#include "io/files/written_file.h"
 #include "io/lightmaps/lightmap_images.h"
 
 namespace radbake {
 namespace {
-
-void check(std::ostream& out, const std::string& path) {
-  if (!out) throw std::runtime_error("cannot write " + path);
-}
 
 // Little-endian float32, as the machine holds them (x86 and ARM both are).
 void write_floats(const std::string& path, const std::vector<float>& values) {
   static_assert(sizeof(float) == 4, "float32");
   std::ofstream out(path, std::ios::binary);
   out.write(reinterpret_cast<const char*>(values.data()), std::streamsize(values.size() * sizeof(float)));
-  check(out, path);
+  close_written(out, path);
 }
 
 }  // namespace
@@ -48,7 +45,7 @@ std::vector<std::string> write_annual(const AnnualRun& run, const std::string& f
                     100 * x.udi_useful, x.sun_hours);
       csv << row;
     }
-    check(csv, path);
+    close_written(csv, path);
     files.push_back("annual_sensors.csv");
   }
   if (!a.work_plane.sensors.empty()) {
@@ -125,7 +122,7 @@ std::vector<std::string> write_annual(const AnnualRun& run, const std::string& f
   const std::string path = folder + "/report.json";
   std::ofstream out(path);
   out << report.dump(2) << "\n";
-  check(out, path);
+  close_written(out, path);
   return files;
 }
 

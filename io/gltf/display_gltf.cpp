@@ -11,6 +11,7 @@
 #include "io/gltf/gltf_binary.h"
 #include "io/gltf/gltf_source.h"
 #include "io/lightmaps/lightmap_images.h"
+#include "io/files/written_file.h"
 
 namespace radbake {
 namespace {
@@ -345,7 +346,7 @@ class DisplayWriter {
     u32(out, uint32_t(binary.size()));
     u32(out, 0x004E4942);  // "BIN\0"
     out.write(reinterpret_cast<const char*>(binary.data()), std::streamsize(binary.size()));
-    if (!out) throw std::runtime_error("cannot write " + path);
+    close_written(out, path);
   }
 
   const DisplayInput& in_;

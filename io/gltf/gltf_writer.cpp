@@ -16,6 +16,7 @@
 
 #include "baker/finish/prelit_pages.h"
 #include "base/errors.h"
+#include "io/files/written_file.h"
 #include "io/files/regular_file.h"
 #include "io/gltf/gltf_binary.h"
 #include "io/gltf/gltf_prune.h"
@@ -36,7 +37,7 @@ constexpr uint64_t kMostImageFileBytes = 0xffffffffu;
 void write_bytes(const fs::path& path, const uint8_t* data, size_t size) {
   std::ofstream out(path, std::ios::binary);
   out.write(reinterpret_cast<const char*>(data), std::streamsize(size));
-  if (!out) throw std::runtime_error("cannot write " + path.string());
+  close_written(out, path.string());
 }
 
 bool is_data_uri(const std::string& uri) { return uri.rfind("data:", 0) == 0; }
@@ -97,7 +98,7 @@ class Writer {
     out_.gltf_file = name_ + ".gltf";
     std::ofstream file(folder_ / out_.gltf_file);
     file << doc_.dump(2) << "\n";
-    if (!file) throw std::runtime_error("cannot write " + (folder_ / out_.gltf_file).string());
+    close_written(file, (folder_ / out_.gltf_file).string());
     out_.written_files.push_back(out_.gltf_file);
     return out_;
   }

@@ -4,6 +4,7 @@
 #include <fstream>
 
 #include "base/errors.h"
+#include "io/files/written_file.h"
 
 namespace radbake {
 
@@ -32,9 +33,10 @@ nlohmann::ordered_json light_probes_json(const LightProbes& probes) {
 
 std::string write_light_probes(const LightProbes& probes, const std::string& folder, const std::string& name) {
   const std::string file = name + "_probes.json";
-  std::ofstream out(std::filesystem::path(folder) / file);
+  const std::string path = (std::filesystem::path(folder) / file).string();
+  std::ofstream out(path);
   out << light_probes_json(probes).dump() << "\n";
-  if (!out) throw std::runtime_error("cannot write " + file);
+  close_written(out, path);
   return file;
 }
 

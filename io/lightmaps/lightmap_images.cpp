@@ -15,6 +15,7 @@
 #include <stdexcept>
 
 #include "base/errors.h"
+#include "io/files/written_file.h"
 #include "io/files/regular_file.h"
 
 namespace radbake {
@@ -35,8 +36,11 @@ void write_image(const std::string& path, int width, int height, const OIIO::Typ
   if (!out) throw std::runtime_error("cannot create " + path + ": " + OIIO::geterror());
   OIIO::ImageSpec spec(width, height, 3, format);
   if (exr) spec.attribute("compression", "zip");
-  if (!out->open(path, spec) || !out->write_image(pixel_type, pixels) || !out->close())
-    throw std::runtime_error("cannot write " + path + ": " + out->geterror());
+  errno = 0;
+  if (!out->open(path, spec) || !out->write_image(pixel_type, pixels) || !out->close()) {
+    out->geterror();  // OpenImageIO's words, cleared: they name its internals, not the reason
+    refuse_unwritten(path);
+  }
 }
 
 }  // namespace

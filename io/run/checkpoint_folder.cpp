@@ -8,6 +8,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <optional>
 
@@ -15,6 +16,7 @@
 #include "base/errors.h"
 #include "base/version.h"
 #include "io/files/regular_file.h"
+#include "io/files/written_file.h"
 
 namespace radbake {
 namespace {
@@ -53,6 +55,19 @@ struct Header {
   uint64_t checksum;
 };
 
+// A checkpoint file written whole, or no file: a failed write leaves no partial file behind.
+void write_or_remove(const std::string& path, const std::function<void(std::ofstream&)>& write) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  write(out);
+  try {
+    close_written(out, path);
+  } catch (const OutputError&) {
+    std::error_code ignored;
+    std::filesystem::remove(path, ignored);
+    throw;
+  }
+}
+
 }  // namespace
 
 uint64_t bake_fingerprint(const LoadedScene& loaded, const std::vector<std::pair<std::string, std::string>>& options) {
@@ -89,9 +104,9 @@ CheckpointFolder::CheckpointFolder(std::string folder, uint64_t fingerprint, std
   }
   nlohmann::json m = {{"fingerprint", hex(fingerprint)}, {"scene", scene}, {"format", kVersion}};
   const fs::path temporary = fs::path(folder_) / (std::string(kManifest) + ".partial");
-  std::ofstream(temporary) << m.dump(2) << "\n";
+  write_or_remove(temporary.string(), [&](std::ofstream& out) { out << m.dump(2) << "\n"; });
   fs::rename(temporary, manifest, error);
-  if (error) throw InputError("checkpoint " + clipped(folder_) + ": cannot write " + kManifest);
+  if (error) throw OutputError("checkpoint " + clipped(folder_) + ": cannot write " + kManifest + ": " + error.message());
 }
 
 std::string CheckpointFolder::file_of(const std::string& stage) const {
@@ -111,16 +126,14 @@ void CheckpointFolder::save(const std::string& stage, const Bytes& state) {
   h.payload_size = state.size();
   h.checksum = sum.h;
   const std::string file = file_of(stage), temporary = file + ".partial." + std::to_string(::getpid());
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+  write_or_remove(temporary, [&](std::ofstream& out) {
     out.write(reinterpret_cast<const char*>(&h), sizeof h);
     out.write(stage.data(), std::streamsize(stage.size()));
     out.write(reinterpret_cast<const char*>(state.data()), std::streamsize(state.size()));
-    if (!out.flush()) throw InputError("checkpoint " + clipped(file) + ": cannot write (disk full?)");
-  }
+  });
   std::error_code error;
   std::filesystem::rename(temporary, file, error);
-  if (error) throw InputError("checkpoint " + clipped(file) + ": cannot write");
+  if (error) throw OutputError("checkpoint " + clipped(file) + ": cannot write: " + error.message());
 }
 
 std::optional<Bytes> CheckpointFolder::load(const std::string& stage) const {

@@ -1,4 +1,5 @@
 #include "io/run/report.h"
+#include "io/files/written_file.h"
 
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -212,7 +213,7 @@ void write_report(const std::string& path, const RunInfo& run, const Scene& scen
   };
   std::ofstream out(path);
   out << report.dump(2) << "\n";
-  if (!out) throw std::runtime_error("cannot write " + path);
+  close_written(out, path);
 }
 
 }  // namespace radbake

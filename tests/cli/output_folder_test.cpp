@@ -5,11 +5,13 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <thread>
 
 #include "io/gltf/gltf_loader.h"
@@ -224,6 +226,67 @@ TEST(Interrupt, ASignalWhileTheLibrariesStartEndsWithTheCancelledLine) {
   EXPECT_NE(log.find("radbake: cancelled; nothing was written"), std::string::npos) << log;
   EXPECT_FALSE(fs::exists(parent + "/out"));
   EXPECT_TRUE(leftovers(parent).empty());
+}
+
+// Issue 32, point 6: a full disk with --debug-dumps ended the bake with exit status 1 and
+// OpenEXR's words. A bake is written into disks of a twelfth, two twelfths ... of the space its
+// output takes (tmpfs in a mount namespace of the test's own, `unshare`): each either writes
+// everything or says in one line which file could not be written because the disk is full, exits
+// 2 and leaves nothing, whichever output kind (debug dump, page, display file, report) it was at.
+TEST(DiskFull, EveryOutputKindFailsWithOneLineAndExitStatusTwo) {
+  const std::string parent = test::fresh_folder("disk_full");
+  const std::string bake = std::string(RADBAKE_BINARY) + " bake " + test::source_path("samples/cornell_box/cornell_box.gltf") +
+                           " --max-page-size 256 --quiet --debug-dumps -o ";
+  ASSERT_EQ(test::run(bake + parent + "/whole").status, 0);
+  uint64_t whole = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(parent + "/whole"))
+    if (entry.is_regular_file()) whole += entry.file_size();
+  std::set<std::string> failed_at;
+  for (int twelfths = 1; twelfths <= 12; ++twelfths) {
+    const uint64_t kib = std::max<uint64_t>(16, whole * twelfths / 12 / 1024);
+    const std::string disk = parent + "/disk_" + std::to_string(twelfths);
+    fs::create_directories(disk);
+    const test::Outcome r = test::run("unshare --user --map-root-user --mount sh -c 'mount -t tmpfs -o size=" +
+                                      std::to_string(kib) + "k tmpfs " + disk + " && " + bake + disk +
+                                      "/out; status=$?; ls -A " + disk + "; exit $status'");
+    SCOPED_TRACE(std::to_string(kib) + " KiB: " + r.err);
+    ASSERT_EQ(r.err.find("unshare:"), std::string::npos) << "no mount namespace here";
+    if (r.status == 0) {
+      EXPECT_EQ(r.out, "out\n");
+      continue;
+    }
+    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(r.err.rfind("radbake: error: cannot write ", 0), 0u);
+    EXPECT_NE(r.err.find(": the disk is full"), std::string::npos);
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1);
+    EXPECT_EQ(r.out, "") << "left on the full disk";
+    const size_t name = r.err.rfind('/'), end = r.err.find(':', name);
+    if (name != std::string::npos && end != std::string::npos) failed_at.insert(r.err.substr(name + 1, end - name - 1));
+  }
+  std::string kinds;
+  for (const std::string& f : failed_at) kinds += f + " ";
+  std::printf("failed at: %s\n", kinds.c_str());
+  EXPECT_TRUE(failed_at.count("cornell_box_irradiance_0.exr")) << kinds;  // the first debug dump
+  EXPECT_TRUE(failed_at.count("cornell_box_lightmap_0.exr")) << kinds;
+  EXPECT_GE(failed_at.size(), 3u) << kinds;
+}
+
+// The same for a checkpoint on a full disk: one line, exit 2, and no partial stage file left.
+TEST(DiskFull, ACheckpointOnAFullDiskFailsWithOneLineAndLeavesNoPartialFile) {
+  const std::string parent = test::fresh_folder("disk_full_checkpoint");
+  const std::string disk = parent + "/disk";
+  fs::create_directories(disk);
+  const test::Outcome r = test::run(
+      "unshare --user --map-root-user --mount sh -c 'mount -t tmpfs -o size=16k tmpfs " + disk + " && " +
+      std::string(RADBAKE_BINARY) + " bake " + test::source_path("samples/cornell_box/cornell_box.gltf") +
+      " --max-page-size 256 --quiet -o " + parent + "/out --checkpoint " + disk + "/checkpoint; status=$?; ls -A " +
+      disk + "/checkpoint; exit $status'");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("cannot write " + disk + "/checkpoint/"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(": the disk is full"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_EQ(r.out.find(".partial"), std::string::npos) << r.out;
+  EXPECT_FALSE(fs::exists(parent + "/out"));
 }
 
 }  // namespace
