@@ -452,8 +452,31 @@ class DocumentCheck {
       violate("/asset/extras", "must be an object when the top-level extras is not (radbake records its bake there)");
   }
 
+  // A data URI as glTF's readers decode it: "data:MIME;base64," then RFC 4648's alphabet, with '='
+  // only as its last one or two characters.
+  void data_uri(const json& o, const std::string& at) {
+    if (!o.contains("uri") || !o["uri"].is_string()) return;
+    const std::string& uri = o["uri"].get_ref<const std::string&>();
+    if (uri.rfind("data:", 0) != 0) return;
+    const size_t comma = uri.find(',');
+    if (comma == std::string::npos || comma < 12 || uri.compare(comma - 7, 7, ";base64") != 0)
+      violate(child(at, "uri"), "is a data URI that is not base64 (radbake reads data:MIME;base64,...)");
+    size_t padding = 0;
+    for (size_t k = comma + 1; k < uri.size(); ++k) {
+      const unsigned char c = static_cast<unsigned char>(uri[k]);
+      const bool letter = std::isalnum(c) || c == '+' || c == '/';
+      padding = c == '=' ? padding + 1 : padding;
+      if ((letter && padding == 0) || (c == '=' && padding <= 2)) continue;
+      violate(child(at, "uri"), "is a data URI whose base64 breaks at character " + std::to_string(k - comma) + " (" +
+                                    (c >= 0x20 && c < 0x7f ? "'" + std::string(1, char(c)) + "'" : "byte " + std::to_string(c)) + ")");
+    }
+    if ((uri.size() - comma - 1) % 4 != 0)
+      violate(child(at, "uri"), "is a data URI whose base64 length is not a multiple of 4 (cut short?)");
+  }
+
   void buffer(json& b, const std::string& at) {
     text(b, "uri", at);
+    data_uri(b, at);
     integer(b, "byteLength", at, 1, kLargestWhole, true);
     common(b, at, Owner::Other);
   }
@@ -508,6 +531,7 @@ class DocumentCheck {
 
   void image(json& i, const std::string& at) {
     text(i, "uri", at);
+    data_uri(i, at);
     text(i, "mimeType", at, {"image/jpeg", "image/png"});
     const bool view = index(i, "bufferView", at, count("bufferViews"), "/bufferViews") >= 0;
     if (view == i.contains("uri")) violate(at, "needs exactly one of uri and bufferView");
@@ -608,7 +632,7 @@ class DocumentCheck {
         violate(child(lp, "intensity"), shown(intensity * brightest) + (type == "directional" ? " lx" : " cd") +
                                             " is above the " + shown(kMaxLightIntensity) + " radbake bakes");
       number(light, "range", lp, 0, INFINITY, 1, false, true);
-      if (json* spot = object(light, "spot", lp)) {
+      if (json* spot = object(light, "spot", lp, type == "spot")) {
         const std::string sp = child(lp, "spot");
         const double outer = number(*spot, "outerConeAngle", sp, 0, kHalfPi, kHalfPi / 2, false, true);
         if (number(*spot, "innerConeAngle", sp, 0, kHalfPi, 0) >= outer)

@@ -73,6 +73,7 @@ void split_glb(const std::vector<uint8_t>& bytes, const std::string& file, GltfS
   for (size_t at = 12; at + 8 <= total;) {
     const uint32_t length = read_u32(bytes, at), type = read_u32(bytes, at + 4);
     if (length > total - at - 8) bad("chunk at byte " + std::to_string(at) + " runs past the end of the file");
+    if (length % 4) bad("chunk at byte " + std::to_string(at) + " is " + std::to_string(length) + " bytes long, not a multiple of 4");
     if (at == 12 && type != 0x4E4F534Au) bad("the first chunk is not JSON");
     if (type == 0x4E4F534Au && at == 12) src.json_text.assign(bytes.begin() + long(at + 8), bytes.begin() + long(at + 8 + length));
     if (type == 0x004E4942u && at > 12 && src.glb_bin.empty())

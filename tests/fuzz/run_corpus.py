@@ -94,6 +94,8 @@ def main():
                     lines = stderr.splitlines()
                     if len(lines) != 1 or not lines[0].startswith("radbake: error: "):
                         failures.append(f"{name}: exit 2 with {len(lines)} lines on stderr: {first_lines(stderr)}")
+                    elif "tinygltf" in lines[0]:  # issue 32: a refusal is in radbake's words, at a JSON pointer
+                        failures.append(f"{name}: refused in tinygltf's words: {first_lines(stderr)}")
                     elif os.path.exists(out):
                         failures.append(f"{name}: exit 2 but the output folder was written")
                     else:

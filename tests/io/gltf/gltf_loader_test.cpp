@@ -3,11 +3,18 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <tuple>
 
 #include "baker/pipeline/bake.h"
 #include "baker/surface/material_sampler.h"
 #include "base/errors.h"
+#include "io/gltf/base64.h"
 #include "io/gltf/gltf_loader.h"
+#include "support/commands.h"
 #include "support/scene_builders.h"
 
 namespace radbake {
@@ -218,6 +225,78 @@ TEST_P(BadInput, IsOneClearInputError) {
     std::string message = e.what();
     EXPECT_NE(message.find(GetParam().says), std::string::npos) << message;
     EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
+}
+
+// Issue 32, point 8: these were refused in tinygltf's words ("Spot light description not found.",
+// "Failed to decode 'uri' : data:... in Buffer") with no JSON pointer. Each is now refused by
+// radbake's own check, at its pointer, before tinygltf reads the file.
+TEST(GltfLoader, RefusalsNameTheirJsonPointerInRadbakesWords) {
+  const std::string folder = test::fresh_folder("loader_pointer_refusals");
+  nlohmann::json cornell = nlohmann::json::parse(test::slurp(test::source_path("samples/cornell_box/cornell_box.gltf")));
+  const std::string bin = test::slurp(test::source_path("samples/cornell_box/cornell_box.bin"));
+  const std::string base64 = to_base64(bin);
+  const std::vector<std::tuple<std::string, std::function<void(nlohmann::json&)>, std::string>> cases = {
+      {"spot_without_spot",
+       [](nlohmann::json& g) {
+         g["extensionsUsed"].push_back("KHR_lights_punctual");
+         g["extensions"]["KHR_lights_punctual"] = {{"lights", {{{"type", "spot"}, {"intensity", 10}}}}};
+       },
+       "/extensions/KHR_lights_punctual/lights/0: spot is missing"},
+      {"buffer_base64_broken",
+       [&](nlohmann::json& g) {
+         g["buffers"][0]["uri"] = "data:application/octet-stream;base64," + base64.substr(0, 400) + "!!!!" + base64.substr(404);
+       },
+       "/buffers/0/uri: is a data URI whose base64 breaks at character 401 ('!')"},
+      {"buffer_base64_cut_short",
+       [&](nlohmann::json& g) {
+         g["buffers"][0]["uri"] = "data:application/octet-stream;base64," + base64.substr(0, base64.size() - 3);
+       },
+       "/buffers/0/uri: is a data URI whose base64 length is not a multiple of 4"},
+      {"image_base64_broken",
+       [&](nlohmann::json& g) { g["images"] = {{{"uri", "data:image/png;base64,iVBORw0KGgo=AAAA"}}}; },
+       "/images/0/uri: is a data URI whose base64 breaks at character 13 ('A')"},
+      {"data_uri_not_base64",
+       [&](nlohmann::json& g) { g["buffers"][0]["uri"] = "data:application/octet-stream,rawbytes"; },
+       "/buffers/0/uri: is a data URI that is not base64"},
+  };
+  std::filesystem::copy_file(test::source_path("samples/cornell_box/cornell_box.bin"), folder + "/cornell_box.bin");
+  // A .glb whose JSON chunk claims one byte less than it holds (tinygltf: "BIN Chunk data length
+  // exceeds the GLB size.").
+  {
+    nlohmann::json g = cornell;
+    g["buffers"][0].erase("uri");
+    std::string text = g.dump();
+    text.append((4 - text.size() % 4) % 4, ' ');
+    std::string bytes;
+    auto u32 = [&](uint32_t v) { bytes.append(reinterpret_cast<const char*>(&v), 4); };
+    const std::string padded_bin = bin + std::string((4 - bin.size() % 4) % 4, '\0');
+    u32(0x46546C67), u32(2), u32(uint32_t(12 + 8 + text.size() + 8 + padded_bin.size()));
+    u32(uint32_t(text.size() - 1)), u32(0x4E4F534A), bytes += text;
+    u32(uint32_t(padded_bin.size())), u32(0x004E4942), bytes += padded_bin;
+    std::ofstream(folder + "/chunk_length.glb", std::ios::binary) << bytes;
+    try {
+      load_gltf(folder + "/chunk_length.glb");
+      ADD_FAILURE() << "chunk_length.glb: no error";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("chunk_length.glb: not a valid .glb: chunk at byte 12 is " +
+                                           std::to_string(text.size() - 1) + " bytes long, not a multiple of 4"),
+                std::string::npos) << e.what();
+    }
+  }
+  for (const auto& [name, edit, says] : cases) {
+    nlohmann::json g = cornell;
+    edit(g);
+    const std::string file = folder + "/" + name + ".gltf";
+    std::ofstream(file) << g.dump();
+    try {
+      load_gltf(file);
+      ADD_FAILURE() << name << ": no error";
+    } catch (const InputError& e) {
+      const std::string message = e.what();
+      EXPECT_NE(message.find(name + ".gltf: " + says), std::string::npos) << message;
+      EXPECT_EQ(message.find("tinygltf"), std::string::npos) << message;
+    }
   }
 }
 
