@@ -196,6 +196,9 @@ OptionGroup<B> bake_group() {
        number<B>("--seed", "N", 0, double(1L << 53), "", FIELD(bake.seed), "random seed; same seed, same output"),
        number<B>("--gather-rays", "N", 1, 1 << 20, "rays", FIELD(bake.gather_rays),
                  "hemisphere rays per texel for indirect light"),
+       run_option(number<B>("--max-rays", "N", 1, 1e18, "rays", FIELD(max_rays),
+                 "refuse a bake whose form factors, gather, path tracing, probes, sensors or hours are estimated to "
+                 "cast more rays in one stage (the default is about an hour on 2 cores)")),
        flag<B>("--no-near-field", false, FIELD(bake.near_field),
                "gather rays landing within three widths of the struck patch take the patch's mean like the others, not "
                "the struck texel's own light (for measuring what the near field does; docs/accuracy.md)"),

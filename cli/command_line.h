@@ -49,6 +49,9 @@ struct BakeCommand {
   Color0 color_0 = Color0::Source;
   bool quiet = false;
   bool debug_dumps = false;
+  // The most rays a stage may be estimated to cast (ray_budget.h): about an hour on 2 cores at the
+  // 3 to 4 million rays a second the samples' bakes measure there.
+  double max_rays = 1e10;
   // Checkpoints and slices (docs/distributed.md); the team and the store are made in main.
   std::string checkpoint;   // --checkpoint DIR; empty: none
   bool merge = false;       // `radbake merge`: the final gather comes from the slices in the checkpoint

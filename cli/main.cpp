@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "baker/pipeline/bake.h"
+#include "baker/pipeline/ray_budget.h"
 #include "baker/sharing/byte_stream.h"
 #include "baker/surface/back_faces.h"
 #include "baker/surface/surface.h"
@@ -163,6 +164,19 @@ struct OutputSession {
   OutputSession(const std::string& output, bool quiet) : folder(output), display(!quiet) {}
 };
 
+// Before a ray is cast: a stage estimated to cast more than --max-rays is refused, and sensors far
+// outside the scene are said (a misplaced file's, in millimetres or another origin).
+void refuse_beyond_ray_budget(radbake::Scene& scene, const radbake::Atlas& atlas, const radbake::BakeOptions& options,
+                              uint64_t daylit_hours, double max_rays) {
+  using namespace radbake;
+  const RayCounts counts = ray_counts(scene, atlas, options.sensors, daylit_hours);
+  if (counts.sensors_outside > 0)
+    scene.warnings.push_back(std::to_string(counts.sensors_outside) + " of the " + std::to_string(counts.sensors) +
+                             " sensors lie outside the scene's bounds (by more than a tenth of its size): metres, "
+                             "and the scene's origin?");
+  check_ray_budget(estimate_stage_rays(options, counts), max_rays);
+}
+
 // `radbake bake --weather`: a year of daylight at the sensors, by daylight coefficients.
 int run_annual(const radbake::BakeCommand& cmd) {
   using namespace radbake;
@@ -188,6 +202,7 @@ int run_annual(const radbake::BakeCommand& cmd) {
   AtlasOptions atlas_options = cmd.atlas;
   atlas_options.progress = progress;
   const Atlas atlas = ensure_lightmap_uvs(mesh_views(loaded.scene), atlas_options);
+  refuse_beyond_ray_budget(loaded.scene, atlas, options, skies.daylit, cmd.max_rays);
   std::vector<bool> occupied(weather.hours.size());
   for (size_t h = 0; h < occupied.size(); ++h)  // EPW's hour h ends at h:00
     occupied[h] = weather.hours[h].hour > cmd.occupied_from && weather.hours[h].hour <= cmd.occupied_to;
@@ -314,6 +329,7 @@ int run_bake(const radbake::BakeCommand& cmd, radbake::Team& team) {
   atlas_options.progress = progress;
   Atlas atlas = ensure_lightmap_uvs(mesh_views(loaded.scene), atlas_options);
   run.io_times.push_back({"lightmap uvs", seconds_since(t)});
+  refuse_beyond_ray_budget(loaded.scene, atlas, options, 0, cmd.max_rays);
   if (!quiet) {
     display.finish();
     std::fprintf(stderr, "radbake: lightmap: %.4g texels/m, %.3g cm texels (%s)\n", atlas.texel_density,

@@ -97,9 +97,13 @@ CheckpointFolder::CheckpointFolder(std::string folder, uint64_t fingerprint, std
     } catch (const nlohmann::json::exception&) {
       throw InputError("checkpoint " + clipped(folder_) + ": " + kManifest + " is damaged");
     }
-    if (!m.is_object() || m.value("fingerprint", "") != hex(fingerprint))
+    // Members of another type (a fuzzed {"fingerprint": 5}) read as absent, never as json's type_error.
+    const auto member = [&](const char* key) {
+      return m.is_object() && m.contains(key) && m[key].is_string() ? m[key].get<std::string>() : std::string("?");
+    };
+    if (member("fingerprint") != hex(fingerprint))
       throw InputError("checkpoint " + clipped(folder_) + " was saved by a bake of another scene or other options (" +
-                       clipped(m.is_object() ? m.value("scene", "?") : "?") + "): use another folder");
+                       clipped(member("scene")) + "): use another folder");
     return;
   }
   nlohmann::json m = {{"fingerprint", hex(fingerprint)}, {"scene", scene}, {"format", kVersion}};

@@ -68,7 +68,7 @@ const std::map<std::string, std::string>& bake_examples() {
       {"--output", " --output other_out"}, {"--quality", out + " --quality draft"},
       {"--method", out + " --method pathtrace"}, {"--samples", out + " --samples 64"},
       {"--tolerance", out + " --tolerance 0.01"}, {"--solver", out + " --solver jacobi"},
-      {"--threads", out + " --threads 1"}, {"--seed", out + " --seed 7"}, {"--gather-rays", out + " --gather-rays 32"},
+      {"--threads", out + " --threads 1"}, {"--seed", out + " --seed 7"}, {"--gather-rays", out + " --gather-rays 32"}, {"--max-rays", out + " --max-rays 1e12"},
       {"--no-near-field", out + " --no-near-field"}, {"--gather-filter", out + " --gather-filter 1"},
       {"--gather-filter-validity", out + " --gather-filter-validity 2"},
       {"--form-factors", out + " --form-factors hemicube"}, {"--patch-rays", out + " --patch-rays 512"},
