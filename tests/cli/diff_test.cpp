@@ -4,8 +4,6 @@
 
 #include <OpenImageIO/imageio.h>
 
-#include <sys/stat.h>
-
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -96,13 +94,6 @@ TEST(Diff, DifferenceImagesShowWhereAndWhichWay) {
   }
 }
 
-// A FIFO at `path` (which it returns), as a reader would find it: no writer, so opening it to read
-// blocks for ever unless it is opened without blocking.
-std::string fifo(const std::string& path) {
-  EXPECT_EQ(mkfifo(path.c_str(), 0600), 0) << path;
-  return path;
-}
-
 // A folder whose one page, x_lightmap_0.exr, `make` puts there.
 std::string folder_with_page(const std::string& folder, const std::function<void(const std::string&)>& make) {
   std::filesystem::create_directories(folder);
@@ -150,8 +141,8 @@ TEST_P(DiffBadInput, ExitsTwoWithOneErrorLine) {
       // Issue 32, point 3: each of these took diff down (std::bad_alloc) or hung it.
       {"huge_header", [&] { return a + " " + page_claiming(a, parent, 65536, 65536); }},
       {"dev_zero", [&] { return a + " /dev/zero"; }},
-      {"fifo", [&] { return a + " " + fifo(parent + "/pipe.exr"); }},
-      {"fifo_page", [&] { return a + " " + folder_with_page(other, [](const std::string& page) { fifo(page); }); }},
+      {"fifo", [&] { return a + " " + test::make_fifo(parent + "/pipe.exr"); }},
+      {"fifo_page", [&] { return a + " " + folder_with_page(other, [](const std::string& page) { test::make_fifo(page); }); }},
       {"link_to_dev_zero", [&] {
          return a + " " + folder_with_page(other, [](const std::string& page) {
                   std::filesystem::create_symlink("/dev/zero", page);
@@ -159,7 +150,7 @@ TEST_P(DiffBadInput, ExitsTwoWithOneErrorLine) {
        }},
       {"link_to_fifo", [&] {
          return a + " " + folder_with_page(other, [&](const std::string& page) {
-                  std::filesystem::create_symlink(fifo(parent + "/another_pipe"), page);
+                  std::filesystem::create_symlink(test::make_fifo(parent + "/another_pipe"), page);
                 });
        }},
   };

@@ -203,6 +203,23 @@ TEST(Distributed, ACheckpointFileThatIsAFifoIsRefusedNotWaitedOn) {
   test::expect_one_line_refusal(test::run(bake + dir + "/b"), "checkpoint manifest", dir + "/b");
 }
 
+// The checkpoint fuzzer's finding (tests/fuzz/findings/checkpoint.manifest_*): a checkpoint.json
+// whose members are of another type ended --resume with json's type_error and exit 1. Each is now
+// a manifest of some other bake, refused in one line.
+TEST(Distributed, AManifestWhoseMembersAreOfAnotherTypeIsRefusedInOneLine) {
+  const std::string dir = test::fresh_folder("distributed_manifest_types");
+  const std::string ckpt = " --checkpoint " + dir + "/ckpt";
+  Outcome first = radbake("bake " + kCornell + kOptions + ckpt + " --stop-after direct-light");
+  ASSERT_EQ(first.status, 0) << first.err;
+  for (const char* finding : {"fingerprint_not_a_string", "scene_not_a_string"}) {
+    fs::copy_file(test::source_path(std::string("tests/fuzz/findings/checkpoint.manifest_") + finding + ".json"),
+                  dir + "/ckpt/checkpoint.json", fs::copy_options::overwrite_existing);
+    const std::string out = dir + "/" + finding;
+    test::expect_one_line_refusal(radbake("bake " + kCornell + kOptions + ckpt + " --resume -o " + out),
+                                  "was saved by a bake of another scene or other options", out);
+  }
+}
+
 TEST(Distributed, SlicesOfTheGatherJoinedByMergeAreTheWholeBake) {
   const std::string dir = test::fresh_folder("distributed_slices");
   const std::string ckpt = " --checkpoint " + dir + "/ckpt";

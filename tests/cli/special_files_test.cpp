@@ -5,8 +5,6 @@
 // instead of hanging the suite.
 #include <gtest/gtest.h>
 
-#include <sys/stat.h>
-
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -18,11 +16,6 @@ namespace radbake {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string make_fifo(const std::string& path) {
-  EXPECT_EQ(mkfifo(path.c_str(), 0600), 0) << path;
-  return path;
-}
 
 // The Cornell box copied into `folder`, its .gltf edited by `edit`; returns the .gltf's path.
 std::string cornell_copy(const std::string& folder, const std::function<void(nlohmann::json&)>& edit = {}) {
@@ -42,6 +35,9 @@ struct SpecialFileCase {
   std::string says;
 };
 
+// gtest prints a parameter it cannot format as its bytes; the case's name says it.
+void PrintTo(const SpecialFileCase& c, std::ostream* os) { *os << c.name; }
+
 class EveryReader : public ::testing::TestWithParam<SpecialFileCase> {};
 
 TEST_P(EveryReader, RefusesAFileThatIsNotARegularFileWithoutWaiting) {
@@ -56,7 +52,7 @@ TEST_P(EveryReader, RefusesAFileThatIsNotARegularFileWithoutWaiting) {
 INSTANTIATE_TEST_SUITE_P(
     Files, EveryReader,
     ::testing::Values(
-        SpecialFileCase{"scene_fifo", [](const std::string& f) { return "bake " + make_fifo(f + "/scene.gltf"); },
+        SpecialFileCase{"scene_fifo", [](const std::string& f) { return "bake " + test::make_fifo(f + "/scene.gltf"); },
                         "scene.gltf: not a regular file"},
         SpecialFileCase{"scene_link_to_dev_zero",
                         [](const std::string& f) {
@@ -68,7 +64,7 @@ INSTANTIATE_TEST_SUITE_P(
                         [](const std::string& f) {
                           const std::string scene = cornell_copy(f);
                           fs::remove(f + "/cornell_box.bin");
-                          make_fifo(f + "/cornell_box.bin");
+                          test::make_fifo(f + "/cornell_box.bin");
                           return "bake " + scene;
                         },
                         "/buffers/0/uri: URI 'cornell_box.bin' is not a regular file"},
@@ -78,19 +74,19 @@ INSTANTIATE_TEST_SUITE_P(
                             g["images"] = {{{"uri", "texture.png"}}};
                             g["textures"] = {{{"source", 0}}};
                           });
-                          make_fifo(f + "/texture.png");
+                          test::make_fifo(f + "/texture.png");
                           return "bake " + scene;
                         },
                         "/images/0/uri: URI 'texture.png' is not a regular file"},
         SpecialFileCase{"sensors_fifo",
                         [](const std::string& f) {
-                          return "bake " + cornell_copy(f) + " --sensors " + make_fifo(f + "/sensors.csv");
+                          return "bake " + cornell_copy(f) + " --sensors " + test::make_fifo(f + "/sensors.csv");
                         },
                         "sensor file '"},
         SpecialFileCase{"weather_fifo",
                         [](const std::string& f) {
                           return "bake " + test::source_path("samples/classroom/classroom.gltf") +
-                                 " --work-plane --weather " + make_fifo(f + "/year.epw");
+                                 " --work-plane --weather " + test::make_fifo(f + "/year.epw");
                         },
                         "weather file '"},
         SpecialFileCase{"weather_dev_zero",
@@ -108,7 +104,7 @@ TEST(SpecialFiles, AnOutputFolderWhoseReportIsAFifoIsNotOurs) {
   const std::string folder = test::fresh_folder("special_output_report");
   const std::string out = folder + "/out";
   fs::create_directories(out);
-  make_fifo(out + "/report.json");
+  test::make_fifo(out + "/report.json");
   const test::Outcome r = test::run("timeout 60 " + std::string(RADBAKE_BINARY) + " bake " + cornell_copy(folder) +
                                     " -o " + out + " --quiet");
   ASSERT_NE(r.status, 124) << "radbake waited on the report";

@@ -7,19 +7,19 @@
 set(RADBAKE_CORPUS_DIR ${CMAKE_BINARY_DIR}/corpus)
 set(RADBAKE_CORPUS_BAKES ${CMAKE_BINARY_DIR}/corpus_bakes)
 add_test(NAME corpus.make COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/samples/corpus/make_corpus.py ${RADBAKE_CORPUS_DIR})
-set_tests_properties(corpus.make PROPERTIES FIXTURES_SETUP corpus_scenes LABELS corpus TIMEOUT 300)
+set_tests_properties(corpus.make PROPERTIES FIXTURES_SETUP corpus_scenes LABELS corpus TIMEOUT ${timeout_300})
 foreach(scene fzk_haus cylinder_engine teapots milk_truck duck arena)
   add_test(NAME corpus.bake.${scene}
     COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/corpus/bake_scene.py $<TARGET_FILE:radbake>
             ${CMAKE_CURRENT_SOURCE_DIR}/tools/validate_gltf.mjs ${RADBAKE_CORPUS_DIR} ${scene} ${RADBAKE_CORPUS_BAKES})
   set_tests_properties(corpus.bake.${scene} PROPERTIES FIXTURES_REQUIRED corpus_scenes FIXTURES_SETUP corpus_bakes
-                       LABELS corpus TIMEOUT 300)
+                       LABELS corpus TIMEOUT ${timeout_300})
 endforeach()
 add_test(NAME corpus.three
   COMMAND node ${CMAKE_CURRENT_SOURCE_DIR}/corpus/three.test.mjs --corpus ${RADBAKE_CORPUS_DIR}
           --bakes ${RADBAKE_CORPUS_BAKES} --work ${CMAKE_BINARY_DIR}/corpus_shots)
-set_tests_properties(corpus.three PROPERTIES FIXTURES_REQUIRED "corpus_scenes;corpus_bakes" LABELS "corpus;web" TIMEOUT 600)
+set_tests_properties(corpus.three PROPERTIES FIXTURES_REQUIRED "corpus_scenes;corpus_bakes" LABELS "corpus;web" TIMEOUT ${timeout_600})
 add_test(NAME corpus.daylight.fzk_haus
   COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/corpus/daylight_scene.py $<TARGET_FILE:radbake>
           ${RADBAKE_CORPUS_DIR} fzk_haus ${RADBAKE_CORPUS_BAKES} 2)
-set_tests_properties(corpus.daylight.fzk_haus PROPERTIES FIXTURES_REQUIRED corpus_scenes LABELS corpus TIMEOUT 600)
+set_tests_properties(corpus.daylight.fzk_haus PROPERTIES FIXTURES_REQUIRED corpus_scenes LABELS corpus TIMEOUT ${timeout_600})

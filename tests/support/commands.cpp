@@ -1,6 +1,7 @@
 #include "support/commands.h"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -35,6 +36,11 @@ void expect_one_line_refusal(const Outcome& r, const std::string& says, const st
   EXPECT_NE(r.err.find(says), std::string::npos) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   EXPECT_FALSE(std::filesystem::exists(unwritten)) << unwritten;
+}
+
+std::string make_fifo(const std::string& path) {
+  EXPECT_EQ(mkfifo(path.c_str(), 0600), 0) << path;
+  return path;
 }
 
 }  // namespace radbake::test

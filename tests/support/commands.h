@@ -22,4 +22,8 @@ std::string slurp(const std::string& path);
 // written at `unwritten` (the output folder it was given).
 void expect_one_line_refusal(const Outcome& r, const std::string& says, const std::string& unwritten);
 
+// A FIFO made at `path` (which it returns), as a hostile user would leave one: no writer, so
+// opening it to read blocks for ever unless it is opened without blocking.
+std::string make_fifo(const std::string& path);
+
 }  // namespace radbake::test
