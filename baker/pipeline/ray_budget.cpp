@@ -9,8 +9,11 @@
 namespace radbake {
 namespace {
 
-// Patches as make_patches picks them by default: one per 32 elements, between 64 and 4096.
-double default_patches(uint64_t texels) { return std::clamp(double(texels) / 32, 64.0, 4096.0); }
+// Patches as build_patches makes them: blocks of a given size, or at most the budget.
+double patch_count(const PatchOptions& patches, uint64_t texels) {
+  if (patches.block_size > 0) return std::max(1.0, double(texels) / (double(patches.block_size) * patches.block_size));
+  return double(patch_budget(patches, size_t(texels)));
+}
 
 // Probes on the grid place_probes lays: the bounds over the spacing along each axis (at least one,
 // at most 10^6), until the grid holds at most max_probes.
@@ -58,7 +61,7 @@ std::vector<StageRays> estimate_stage_rays(const BakeOptions& o, const RayCounts
     // Each path is at least its first ray; the scenes radbake bakes average three to five bounces.
     stages.push_back({"path tracing", "--samples", texels * o.path_trace.samples * 4});
   } else {
-    const double patches = o.patches.max_patches ? double(o.patches.max_patches) : default_patches(c.texels);
+    const double patches = patch_count(o.patches, c.texels);
     if (o.form_factors.method == FormFactorMethod::Hemicube) {
       // A hemicube's top face and four half sides: three times the top face's pixels, each a ray.
       const double side = o.form_factors.hemicube_resolution;

@@ -118,12 +118,17 @@ Patches patches_from_keys(const Elements& e, const Surface& surface, std::vector
 
 }  // namespace
 
+size_t patch_budget(const PatchOptions& options, size_t elements) {
+  if (options.max_patches > 0) return options.max_patches;
+  const size_t cap = std::max<size_t>(options.patch_cap, 64);
+  return std::clamp<size_t>(elements / std::max<size_t>(options.elements_per_patch, 1), 64, cap);
+}
+
 Patches build_patches(const Elements& e, const Surface& surface, const PatchOptions& options) {
   int block = options.block_size > 0 ? 1 << log2_side(options.block_size) : 1;
   auto uniform = [&](size_t) { return block; };
   std::vector<Keyed> keys = block_keys(e, surface, uniform);
-  const size_t max_patches =
-      options.max_patches > 0 ? options.max_patches : std::clamp<size_t>(keys.size() / 32, 64, 4096);
+  const size_t max_patches = patch_budget(options, keys.size());
   // Pages are at most 16384 texels, so blocks stay under 2^16 per side in the key.
   while (options.block_size <= 0 && distinct_keys(keys) > max_patches && block < 16384) {
     block *= 2;

@@ -26,9 +26,19 @@ struct Patches {
 
 struct PatchOptions {
   int block_size = 0;       // texels per patch side; 0 picks the smallest power of two that keeps
-  size_t max_patches = 0;   // the patch count at or under this; 0: one patch per 32 elements,
-                            // between 64 and 4096, so form factor rays cost about what the gather does
+  size_t max_patches = 0;   // the patch count at or under this; 0: patch_budget's
+  // The budget when max_patches is 0: one patch per `elements_per_patch` elements, between 64 and
+  // `patch_cap`. The cap is what keeps memory linear in texels: a patch holds a row of form factors
+  // (about 8 bytes for each of a thousand or more targets), so patches of a fixed number of texels
+  // make the rows grow with the texels (4-texel patches took 3 KB per texel); past the cap patches
+  // grow in texels instead and keep their size in metres, while the final gather stays at texel
+  // resolution (as Enlighten sizes its clusters in metres, apart from the output texels).
+  size_t elements_per_patch = 32;
+  size_t patch_cap = 4096;
 };
+
+// The most patches `options` allow for `elements` elements.
+size_t patch_budget(const PatchOptions& options, size_t elements);
 
 // Square blocks of `block_size` texels (a power of two; a given size is rounded down to one).
 Patches build_patches(const Elements& elements, const Surface& surface, const PatchOptions& options);

@@ -83,8 +83,8 @@ struct Case {
 };
 void PrintTo(const Case& c, std::ostream* out) { *out << c.name; }
 
-// What `--quality production` sets (baker/pipeline/quality_presets.cpp): patches of 4
-// texels, more rays.
+// About what `--quality production` sets (baker/pipeline/quality_presets.cpp): patches of 4
+// texels (what its patch budget gives the Cornell box on a 256 page), more rays.
 BakeOptions production() {
   BakeOptions options;
   options.gather_rays = 1024;
