@@ -238,7 +238,7 @@ GatherTrace trace_gather(const Elements& e, const Patches& patches, const Surfac
         // whole footprint, and near a wall the footprint sees more of the wall than its centre.
         Vec3 origin = footprint_point(e, surface, i, cmj_sample(k, rays, origin_pattern)) + ng * e.offset[i];
         Vec3 dir = hemisphere_direction(e.normal[i], ng, cmj_sample(k, rays, direction_pattern));
-        const Landing at = land(e, patches, surface, tracer, origin, dir);
+        const Landing at = land(e, patches, surface, tracer, origin, dir, e.flags[i]);
         if (!at.escaped) nearness += 1.0 / std::max(at.distance, 1e-6f);
         if (at.patch == UINT32_MAX) {
           my_lost += !at.escaped;

@@ -146,7 +146,7 @@ void light_probes(LightProbes& probes, const Elements& elements, const std::vect
       if (hit.missed()) {
         if (sky.enabled) radiance = Rgb{1, 1, 1} * float(view.luminance(d));
       } else if (hit.front) {
-        const int64_t e = element_for_hit(elements, surface, tracer, hit);
+        const int64_t e = element_for_hit(elements, surface, tracer, hit, kFromTheOpen);
         if (e >= 0 && elements.valid(size_t(e))) radiance = (exitance[size_t(e)] - elements.emission[size_t(e)]) / kPi;
       }
       add(seen, radiance, d);

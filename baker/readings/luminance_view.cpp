@@ -27,7 +27,7 @@ struct Seeing {
     const Hit hit = tracer.intersect_light_path(origin, d, 0.0f, INFINITY);
     if (hit.missed()) return sky.enabled ? view.luminance(d) : 0.0;
     if (!hit.front) return 0;
-    const int64_t e = element_for_hit(elements, surface, tracer, hit);
+    const int64_t e = element_for_hit(elements, surface, tracer, hit, kFromTheOpen);
     return e >= 0 && elements.valid(size_t(e)) ? photopic(exitance[size_t(e)]) / M_PI : 0.0;
   }
 

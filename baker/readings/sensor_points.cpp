@@ -23,7 +23,7 @@ SensorHits sensor_gather_hits(const Sensor& s, size_t index, const Elements& ele
       const Vec3 d = cosine_direction(s.normal, cmj_sample(k, per_batch, pattern[b]));
       const Hit hit = tracer.intersect_light_path(origin, d, 0.0f, INFINITY);
       if (hit.missed() || !hit.front) continue;
-      const int64_t element = element_for_hit(elements, surface, tracer, hit);
+      const int64_t element = element_for_hit(elements, surface, tracer, hit, kFromTheOpen);
       if (element >= 0 && elements.valid(size_t(element))) hits.elements.push_back(element);
     }
     hits.batch_end[b] = hits.elements.size();

@@ -198,7 +198,19 @@ bool footprint_surface_point(const Elements& elements, const Surface& surface, s
 
 Vec3 footprint_point(const Elements& elements, const Surface& surface, size_t i, Vec2 u) {
   int cx = std::min(3, int(u.x * 4)), cy = std::min(3, int(u.y * 4));
-  if (!(elements.visible_cells[i] >> (cy * 4 + cx) & 1)) return elements.position[i];
+  const uint16_t visible = elements.visible_cells[i];
+  if (visible == 0) return elements.position[i];
+  // A cell the sample does not see passes its share to the visible ones in turn, so the points stay
+  // spread over the footprint kept: on a texel split at a cover's edge the sample point lies on the
+  // edge itself, and half of all rays started there put the slit's light into the texel's.
+  if (!(visible >> (cy * 4 + cx) & 1)) {
+    const int count = __builtin_popcount(visible);
+    int turn = (cy * 4 + cx) % count;
+    int cell = 0;
+    while (!(visible >> cell & 1) || turn-- > 0) ++cell;
+    cx = cell % 4, cy = cell / 4;
+    u = {(cx + u.x * 4 - std::floor(u.x * 4)) / 4, (cy + u.y * 4 - std::floor(u.y * 4)) / 4};
+  }
   // Near geometry only the cell centres were checked (a wall may cross a cell): use those.
   if (elements.flags[i] & kNearGeometry) u = {(cx + 0.5f) / 4, (cy + 0.5f) / 4};
   Vec3 p;

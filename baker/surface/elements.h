@@ -98,7 +98,8 @@ int64_t element_at_point(const Elements& elements, const Surface& surface, uint3
 bool footprint_surface_point(const Elements& elements, const Surface& surface, size_t element, Vec2 u, Vec3& point);
 
 // A point of the element's footprint for sub-texel sample u in [0,1)^2: on the element's triangle
-// in a cell the sample point sees, else the sample point itself.
+// in a cell the sample point sees (u in a cell it does not see is moved to one it does), else the
+// sample point itself.
 Vec3 footprint_point(const Elements& elements, const Surface& surface, size_t element, Vec2 u);
 
 }  // namespace radbake

@@ -95,6 +95,8 @@ void measure_hemicube_rows(const Elements& elements, const Patches& patches, con
       const uint32_t p = which[w];
       const Viewpoint view = viewpoint(elements, patches, surface, p);
       const Vec3 ng = view.geometric_normal, n = view.normal, origin = view.origin;
+      // A patch never holds texels both under a cover and in the open (place_samples).
+      const uint8_t side = elements.flags[patches.members[patches.first_member[p]]] & kUnderCover;
       Vec3 t, b;
       orthonormal_basis(n, t, b);
       Rng rng(seed, Stream::Hemicube, p);
@@ -104,7 +106,7 @@ void measure_hemicube_rows(const Elements& elements, const Patches& patches, con
       for (const HemicubePixel& pixel : pixels) {
         Vec3 dir = above_surface(normalize(tx * pixel.direction.x + ty * pixel.direction.y + n * pixel.direction.z), ng);
         bool left;
-        uint32_t q = patch_hit(elements, patches, surface, tracer, origin, dir, left);
+        uint32_t q = patch_hit(elements, patches, surface, tracer, origin, dir, side, left);
         if (q == UINT32_MAX) {
           (left ? escaped : lost) += pixel.delta_form_factor;
           continue;

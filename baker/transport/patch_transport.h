@@ -100,23 +100,27 @@ PatchTransport balanced_transport(const Patches& patches, MeasuredRows measured)
 std::vector<uint32_t> all_patches(size_t n);
 
 // The element that stands for a hit point (the texel's on the hit's side of any wall or cover
-// crossing it), or -1 for none.
-int64_t element_for_hit(const Elements& elements, const Surface& surface, const RayTracer& tracer, const Hit& hit);
+// crossing it), or -1 for none. `seen_from` is the ray origin's kUnderCover flag (0 in the open): a
+// hit across the mouth of a thin gap, in it from the open or out of it from inside, is none.
+int64_t element_for_hit(const Elements& elements, const Surface& surface, const RayTracer& tracer, const Hit& hit,
+                        uint8_t seen_from);
+constexpr uint8_t kFromTheOpen = 0;  // seen_from for a point off the surfaces (sensors, probes, eyes)
 
 // Where a ray from `origin` in `direction` lands: the element and patch it struck (UINT32_MAX for
-// none: it left the scene, or struck a back face or a buried texel) and how far away (infinite if
-// it left).
+// none: it left the scene, or struck a back face, a buried texel or the far side of a thin gap's
+// mouth) and how far away (infinite if it left). `seen_from`: the origin's element's flags (only
+// kUnderCover counts); a ray that leaves a thin gap is lost, not escaped.
 struct Landing {
   uint32_t element = UINT32_MAX, patch = UINT32_MAX;
   float distance = 0;  // metres
   bool escaped = false;
 };
 Landing land(const Elements& elements, const Patches& patches, const Surface& surface, const RayTracer& tracer,
-             Vec3 origin, Vec3 direction);
+             Vec3 origin, Vec3 direction, uint8_t seen_from);
 
 // Where a ray from `origin` in `direction` lands: the patch it struck, or UINT32_MAX with
 // `escaped` telling whether it left the scene (else it struck a back face or a buried texel).
 uint32_t patch_hit(const Elements& elements, const Patches& patches, const Surface& surface,
-                   const RayTracer& tracer, Vec3 origin, Vec3 direction, bool& escaped);
+                   const RayTracer& tracer, Vec3 origin, Vec3 direction, uint8_t seen_from, bool& escaped);
 
 }  // namespace radbake
