@@ -3,7 +3,10 @@
 #include <fcntl.h>
 #include <netinet/in.h>
 #include <sys/socket.h>
+#include <sys/syscall.h>
 #include <unistd.h>
+
+#include <algorithm>
 
 #include <condition_variable>
 #include <deque>
@@ -24,6 +27,14 @@ thread_local int last_accepted_socket = -1;
 extern "C" int accept(int listening, sockaddr* address, socklen_t* length) {
   last_accepted_socket = ::accept4(listening, address, length, 0);
   return last_accepted_socket;
+}
+
+// Debian's cpp-httplib 0.11 is a shared library that listens with a backlog of 5. 200 clients
+// connecting at once, while the accepting thread waited for one of two busy cores, overflowed it:
+// the kernel dropped the handshakes past it, and their clients were reset some 100 s later, never
+// answered. Its one call to listen is interposed, as accept is, and asks for the system's maximum.
+extern "C" int listen(int socket, int backlog) {
+  return int(::syscall(SYS_listen, socket, std::max(backlog, SOMAXCONN)));
 }
 
 namespace radbake {
