@@ -7,7 +7,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-
 #include <condition_variable>
 #include <deque>
 #include <map>

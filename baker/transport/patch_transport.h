@@ -118,8 +118,8 @@ struct Landing {
 Landing land(const Elements& elements, const Patches& patches, const Surface& surface, const RayTracer& tracer,
              Vec3 origin, Vec3 direction, uint8_t seen_from);
 
-// Where a ray from `origin` in `direction` lands: the patch it struck, or UINT32_MAX with
-// `escaped` telling whether it left the scene (else it struck a back face or a buried texel).
+// Where a ray from `origin` in `direction` lands, as `land` has it: the patch it struck, or
+// UINT32_MAX with `escaped` telling whether it left the scene (else it was lost).
 uint32_t patch_hit(const Elements& elements, const Patches& patches, const Surface& surface,
                    const RayTracer& tracer, Vec3 origin, Vec3 direction, uint8_t seen_from, bool& escaped);
 
