@@ -11,12 +11,6 @@ struct InputError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// An output that could not be written: the user's disk (full, read-only, no permission), exit
-// status 2 like bad input. The message names the file and why, in radbake's words.
-struct OutputError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
 // A stage made a NaN or an infinity from input that passed validation: our bug, never written out.
 struct NonFiniteValue : std::runtime_error {
   using std::runtime_error::runtime_error;
@@ -38,6 +32,17 @@ inline std::string clipped(const std::string& text, size_t max = 100) {
   const size_t head = boundary(max * 2 / 3), tail = boundary(out.size() - (max - max * 2 / 3 - 3));
   return out.substr(0, head) + "..." + out.substr(tail);
 }
+
+// An output that could not be written: the user's disk (full, read-only, no permission), exit
+// status 2 like bad input. The message names the file and why, in radbake's words; a file's
+// `path` and `reason` are kept apart so the message can name it where the user will look for it
+// (OUT/..., not the staging folder it was being written in).
+struct OutputError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+  OutputError(const std::string& file, const std::string& why)
+      : std::runtime_error("cannot write " + clipped(file) + ": " + why), path(file), reason(why) {}
+  std::string path, reason;  // empty unless one file's writing failed
+};
 
 // Thrown when a bake has done what it was asked to (--stop-after, a slice of the gather) and its
 // checkpoint holds it: what() names the last stage done.

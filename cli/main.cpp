@@ -178,7 +178,7 @@ void refuse_beyond_ray_budget(radbake::Scene& scene, const radbake::Atlas& atlas
 }
 
 // `radbake bake --weather`: a year of daylight at the sensors, by daylight coefficients.
-int run_annual(const radbake::BakeCommand& cmd) {
+int run_annual(const radbake::BakeCommand& cmd, std::optional<OutputSession>& session) {
   using namespace radbake;
   const auto start = std::chrono::steady_clock::now();
   LoadedScene loaded = load_gltf(cmd.input, cmd.load);
@@ -195,10 +195,10 @@ int run_annual(const radbake::BakeCommand& cmd) {
       options.sky = hour;  // the compass and the rays every hour shares
       break;
     }
-  OutputSession session(cmd.output, cmd.quiet);
-  StagedFolder& folder = session.folder;
-  ProgressDisplay& display = session.display;
-  const ProgressCallback& progress = session.progress;
+  session.emplace(cmd.output, cmd.quiet);
+  StagedFolder& folder = session->folder;
+  ProgressDisplay& display = session->display;
+  const ProgressCallback& progress = session->progress;
   AtlasOptions atlas_options = cmd.atlas;
   atlas_options.progress = progress;
   const Atlas atlas = ensure_lightmap_uvs(mesh_views(loaded.scene), atlas_options);
@@ -270,12 +270,9 @@ const char* stage_title(const std::string& stage) {
   return nullptr;
 }
 
-int run_bake(const radbake::BakeCommand& cmd, radbake::Team& team) {
+// `radbake bake` and `radbake merge`, but for a year of weather.
+int run_one_bake(const radbake::BakeCommand& cmd, radbake::Team& team, std::optional<OutputSession>& session) {
   using namespace radbake;
-  if (!cmd.weather_file.empty()) {
-    if (team.size() > 1) throw InputError("--weather bakes a year in one process: run it without mpirun");
-    return run_annual(cmd);
-  }
   const bool first = team.first();
   const auto start = std::chrono::steady_clock::now();
   RunInfo run;
@@ -315,7 +312,6 @@ int run_bake(const radbake::BakeCommand& cmd, radbake::Team& team) {
   options.sharing.store = checkpoint.get();
   if (cmd.merge) options.sharing.merge_slices = slice_count(*checkpoint, cmd.checkpoint);
   // A slice, a stopped bake and the processes after the first write no output folder.
-  std::optional<OutputSession> session;
   if (first && !cmd.output.empty()) session.emplace(cmd.output, cmd.quiet);
   ProgressDisplay no_folder_display(!quiet && !session);
   const ProgressCallback no_folder_progress = [&](const std::string& stage, double fraction) {
@@ -423,6 +419,21 @@ int run_bake(const radbake::BakeCommand& cmd, radbake::Team& team) {
               gltf.gltf_file.c_str(), result.pages.size(), result.pages.size() == 1 ? "" : "s",
               result.report.valid_elements, balance, run.total_seconds);
   return 0;
+}
+
+// A file that could not be written is named where the user would look for it, OUT/..., not in the
+// hidden staging folder it was being written in (removed when this returns).
+int run_bake(const radbake::BakeCommand& cmd, radbake::Team& team) {
+  using namespace radbake;
+  std::optional<OutputSession> session;
+  try {
+    if (cmd.weather_file.empty()) return run_one_bake(cmd, team, session);
+    if (team.size() > 1) throw InputError("--weather bakes a year in one process: run it without mpirun");
+    return run_annual(cmd, session);
+  } catch (const OutputError& e) {
+    if (!session || e.path.empty()) throw;
+    throw OutputError(session->folder.as_committed(e.path), e.reason);
+  }
 }
 
 void print_stats(const radbake::Atlas& atlas, const radbake::UvCommand& cmd, double load_seconds) {

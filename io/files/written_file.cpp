@@ -35,7 +35,7 @@ void refuse_unwritten(const std::string& path) {
   } else {
     reason = "the write failed";
   }
-  throw OutputError("cannot write " + clipped(path) + ": " + reason);
+  throw OutputError(path, reason);
 }
 
 void close_written(std::ofstream& out, const std::string& path) {

@@ -137,8 +137,15 @@ StagedFolder::StagedFolder(const std::string& target) {
   const fs::path staging = t.parent_path() / (prefix + std::to_string(getpid()));
   fs::create_directory(staging, ec);
   if (ec) throw InputError("cannot create " + clipped(staging.string()) + ": " + ec.message());
+  given_ = target;
   target_ = t.string();
   staging_ = staging.string();
+}
+
+std::string StagedFolder::as_committed(const std::string& file) const {
+  const fs::path inside = fs::path(file).lexically_relative(staging_);
+  if (inside.empty() || *inside.begin() == "..") return file;
+  return (fs::path(given_) / inside).string();
 }
 
 StagedFolder::~StagedFolder() {

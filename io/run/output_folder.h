@@ -24,6 +24,9 @@ class StagedFolder {
   StagedFolder& operator=(const StagedFolder&) = delete;
 
   const std::string& path() const { return staging_; }
+  // `file` (a path in the staging folder) as the user will find it once committed: under the
+  // target as they named it. Any other path is returned as it is.
+  std::string as_committed(const std::string& file) const;
   // Every file in the staging folder, '/'-separated and relative to it: what report.json lists
   // as radbake's, so the next bake can tell a user's files from its own.
   std::vector<std::string> files() const;
@@ -43,7 +46,7 @@ class StagedFolder {
     ~Lock();
   };
 
-  std::string target_, staging_;
+  std::string given_, target_, staging_;  // the target as the user named it, and as an absolute path
   Lock lock_;
   std::mutex mutex_;  // commit() against abandon()
   bool committed_ = false;
