@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <cmath>
 #include <map>
 
@@ -214,14 +213,14 @@ GatherTrace trace_gather(const Elements& e, const Patches& patches, const Surfac
   GatherTrace out;
   out.irradiance.resize(range.size());
   out.harmonic_distance.assign(range.size(), INFINITY);
+  out.open_view.assign(range.size(), 0.0f);
   if (directions) out.mean_direction.resize(range.size());
   // Fixed blocks of elements, each with its own list of near landings, joined in block order: the
   // same list whatever the threads.
   constexpr size_t kBlock = 256;
   std::vector<std::vector<NearLanding>> landings((range.size() + kBlock - 1) / kBlock);
-  std::atomic<uint64_t> lost{0}, cast{0};
+  std::vector<RayFates> fates(landings.size());
   tbb::parallel_for(size_t(0), landings.size(), [&](size_t block) {
-    uint64_t my_lost = 0, my_cast = 0;
     std::vector<uint32_t> struck;
     const size_t begin = range.begin + block * kBlock, end = std::min(range.end, begin + kBlock);
     for (size_t i = begin; i < end; ++i) {
@@ -232,6 +231,7 @@ GatherTrace trace_gather(const Elements& e, const Patches& patches, const Surfac
       Rgb sum{};
       LightDirection from{};
       double nearness = 0;  // sum of 1 / distance
+      uint32_t escaped = 0;
       struck.clear();
       for (uint32_t k = 0; k < rays; ++k) {
         // Origins spread over the texel, as the form factor rays do: an element stands for its
@@ -239,11 +239,10 @@ GatherTrace trace_gather(const Elements& e, const Patches& patches, const Surfac
         Vec3 origin = footprint_point(e, surface, i, cmj_sample(k, rays, origin_pattern)) + ng * e.offset[i];
         Vec3 dir = hemisphere_direction(e.normal[i], ng, cmj_sample(k, rays, direction_pattern));
         const Landing at = land(e, patches, surface, tracer, origin, dir, e.flags[i]);
+        fates[block].add(at.fate);
+        escaped += at.escaped;
         if (!at.escaped) nearness += 1.0 / std::max(at.distance, 1e-6f);
-        if (at.patch == UINT32_MAX) {
-          my_lost += !at.escaped;
-          continue;
-        }
+        if (at.patch == UINT32_MAX) continue;
         if (near_field && at.distance < inputs.near_reach[at.patch]) {
           sum += e.reflectance[at.element] * direct[at.element];
           struck.push_back(at.element);
@@ -269,14 +268,11 @@ GatherTrace trace_gather(const Elements& e, const Patches& patches, const Surfac
         out.mean_direction[i - range.begin] = from * per;
       }
       if (nearness > 0) out.harmonic_distance[i - range.begin] = float(double(rays) / nearness);
-      my_cast += rays;
+      out.open_view[i - range.begin] = float(escaped) / float(rays);
     }
-    lost += my_lost;
-    cast += my_cast;
   });
   for (const auto& block : landings) out.landings.insert(out.landings.end(), block.begin(), block.end());
-  out.lost = lost;
-  out.cast = cast;
+  for (const RayFates& f : fates) out.fates += f;
   return out;
 }
 
@@ -287,6 +283,7 @@ GatheredLight finish_gather(const Elements& e, const Patches& patches, const Pat
   GatheredLight out;
   out.irradiance = std::move(whole.irradiance);
   out.harmonic_distance = std::move(whole.harmonic_distance);
+  out.open_view = std::move(whole.open_view);
   out.mean_direction = std::move(whole.mean_direction);
   if (rays > 0 && near_field) solve_near_indirect(e, patches, inputs.patch_indirect, whole.landings, rays, out.irradiance);
   const NearTally near = tally_near_field(e, patches, patch_exitance, direct, out.irradiance, whole.landings, rays);
@@ -299,7 +296,7 @@ GatheredLight finish_gather(const Elements& e, const Patches& patches, const Pat
   const std::vector<Rgb> bounces = near_field_bounces(patches, transport, received);
   for (size_t p = 0; p < patches.size(); ++p) correction[p] += bounces[p];
   apply_patch_changes(e, patches, correction, out.irradiance);
-  if (stats) stats->back_face_fraction = whole.cast ? double(whole.lost) / double(whole.cast) : 0.0;
+  if (stats) stats->fates = whole.fates;
   return out;
 }
 

@@ -16,12 +16,13 @@
 #include "baker/surface/ray_tracer.h"
 #include "baker/transport/patch_transport.h"
 #include "baker/transport/patches.h"
+#include "baker/transport/ray_fates.h"
 #include "base/progress.h"
 
 namespace radbake {
 
 struct GatherStats {
-  double back_face_fraction = 0;  // of all gather rays, over valid elements
+  RayFates fates;  // where the gather rays of all valid elements ended
 };
 
 struct GatheredLight {
@@ -33,6 +34,9 @@ struct GatheredLight {
   // Per element, metres: the harmonic mean of its rays' distances to what they struck (rays
   // leaving the scene count as infinitely far; infinite if all did), how near other surfaces are.
   std::vector<float> harmonic_distance;
+  // Per element: the share of its gather rays that left the scene (cosine-weighted, so the view of
+  // the open it has: about 1 on a roof, under 0.1 in a room with windows), 0 for none cast.
+  std::vector<float> open_view;
 };
 
 // Gather rays from a receiver that landed near, on one struck element (the near field).
@@ -45,9 +49,10 @@ struct NearLanding {
 struct GatherTrace {
   std::vector<Rgb> irradiance;          // per element of the range, lux, before the near field is solved
   std::vector<float> harmonic_distance; // per element of the range, metres
+  std::vector<float> open_view;         // per element of the range, as GatheredLight's
   std::vector<LightDirection> mean_direction;  // per element of the range, as GatheredLight's; empty unless asked
   std::vector<NearLanding> landings;    // by receiver, then struck element
-  uint64_t lost = 0, cast = 0;          // rays that struck back faces or buried texels, rays cast
+  RayFates fates;                       // where its rays ended
 };
 
 // What every range needs besides the elements: per patch, the irradiance it gathers in the solve

@@ -224,6 +224,7 @@ std::optional<GatheredLight> shared_gather(const Elements& elements, const Patch
   if (team.first()) {
     whole.irradiance.resize(n);
     whole.harmonic_distance.assign(n, INFINITY);
+    whole.open_view.assign(n, 0.0f);
     if (directional) whole.mean_direction.resize(n);
   }
   SharedStage stage;
@@ -236,20 +237,21 @@ std::optional<GatheredLight> shared_gather(const Elements& elements, const Patch
     ByteWriter out;
     out.put_vector(t.irradiance);
     out.put_vector(t.harmonic_distance);
+    out.put_vector(t.open_view);
     out.put_vector(t.mean_direction);
     out.put_vector(t.landings);
-    out.put(t.lost);
-    out.put(t.cast);
+    out.put(t.fates);
     return out.bytes();
   };
   stage.take = [&](size_t chunk, const Bytes& result) {
     ByteReader in(result);
     const std::vector<Rgb> irradiance = in.get_vector<Rgb>();
     const std::vector<float> distance = in.get_vector<float>();
+    const std::vector<float> open_view = in.get_vector<float>();
     const std::vector<LightDirection> mean_direction = in.get_vector<LightDirection>();
     landings[chunk] = in.get_vector<NearLanding>();
     const size_t count = starts[chunk + 1] - starts[chunk];
-    if (irradiance.size() != count || distance.size() != count ||
+    if (irradiance.size() != count || distance.size() != count || open_view.size() != count ||
         mean_direction.size() != (directional ? count : 0))
       throw TruncatedBytes();
     if (!mean_direction.empty())
@@ -258,8 +260,8 @@ std::optional<GatheredLight> shared_gather(const Elements& elements, const Patch
       if (l.receiver < starts[chunk] || l.receiver >= starts[chunk + 1] || l.struck >= n) throw TruncatedBytes();
     std::copy(irradiance.begin(), irradiance.end(), whole.irradiance.begin() + std::ptrdiff_t(starts[chunk]));
     std::copy(distance.begin(), distance.end(), whole.harmonic_distance.begin() + std::ptrdiff_t(starts[chunk]));
-    whole.lost += in.get<uint64_t>();
-    whole.cast += in.get<uint64_t>();
+    std::copy(open_view.begin(), open_view.end(), whole.open_view.begin() + std::ptrdiff_t(starts[chunk]));
+    whole.fates += in.get<RayFates>();
   };
   if (sharing.merge_slices > 0) {
     if (team.first()) {
@@ -337,6 +339,7 @@ void interreflect(const Elements& elements, const Surface& surface, const RayTra
                          options, progress, &gather_stats);
   });
   if (!gathered) return;
+  result.open_view = std::move(gathered->open_view);
   result.irradiance = clock.run("gather filter", [&] {
     std::vector<uint8_t> gathering(elements.size());
     for (size_t i = 0; i < elements.size(); ++i) gathering[i] = patches.patch_of_element[i] != UINT32_MAX;
@@ -357,7 +360,8 @@ void interreflect(const Elements& elements, const Surface& surface, const RayTra
   report.unshot_relative = solution.relative_unshot;
   report.converged = solution.converged;
   report.ambient = solution.ambient;
-  report.gather_back_face_fraction = gather_stats.back_face_fraction;
+  report.gather_rays = gather_stats.fates;
+  report.form_factor_rays = light_between.transport.fates;
   report.plan.push_back(solve_outcome(solution, solve));
   if (!solution.converged)
     report.warnings.push_back("the radiosity solve stopped at its iteration guard before reaching the tolerance");
@@ -560,7 +564,7 @@ BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& given
   }
   result.display_camera = clock.run("display camera", [&] { return display_camera(scene, surface, *tracer); });
   result.display_view = clock.run("display view", [&] { return display_view(scene, result.display_camera, surface, *tracer); });
-  report.surfaces = surface_statistics(scene, surface, elements, result.irradiance);
+  report.surfaces = surface_statistics(scene, surface, elements, result.irradiance, result.open_view);
 
   for (const AtlasPage& p : surface.pages) report.page_texels += size_t(p.width) * p.height;
   report.elements = n;

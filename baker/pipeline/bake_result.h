@@ -20,6 +20,7 @@
 #include "baker/surface/light_direction.h"
 #include "baker/transport/energy_balance.h"
 #include "baker/transport/interreflection.h"
+#include "baker/transport/ray_fates.h"
 #include "base/math.h"
 
 namespace radbake {
@@ -44,7 +45,7 @@ struct BakeReport {
   bool converged = false;
   Rgb ambient{};
   EnergyBalance balance;
-  double gather_back_face_fraction = 0;
+  RayFates gather_rays, form_factor_rays;  // where the final gather's and the form factors' rays ended
   // Method::PathTrace: paths per texel, and the noise estimate (PathTraced::relative_noise).
   uint32_t path_samples = 0;
   double path_relative_noise = 0;
@@ -71,6 +72,7 @@ struct BakeResult {
   std::vector<std::vector<LightmapPage>> directional;  // BakeOptions::directional's pages (directional_pages)
   std::vector<uint32_t> patch_of_element;          // UINT32_MAX for buried elements
   std::vector<float> standard_error;               // Method::PathTrace: per element, lux; else empty
+  std::vector<float> open_view;                    // per element, GatheredLight's; empty without a final gather
   std::vector<Sensor> sensors;                     // BakeOptions::sensors, then the work plane's
   std::vector<double> sensor_lux;                  // per sensor
   std::vector<double> sensor_standard_error;       // per sensor, lux: its rays' noise (sensor_points.h)

@@ -103,10 +103,11 @@ void measure_hemicube_rows(const Elements& elements, const Patches& patches, con
       const float turn = 2 * kPi * rng.uniform();
       const Vec3 tx = t * std::cos(turn) + b * std::sin(turn), ty = cross(n, tx);
       double escaped = 0, lost = 0;
+      RayFates fates;
       for (const HemicubePixel& pixel : pixels) {
         Vec3 dir = above_surface(normalize(tx * pixel.direction.x + ty * pixel.direction.y + n * pixel.direction.z), ng);
         bool left;
-        uint32_t q = patch_hit(elements, patches, surface, tracer, origin, dir, side, left);
+        uint32_t q = patch_hit(elements, patches, surface, tracer, origin, dir, side, left, fates);
         if (q == UINT32_MAX) {
           (left ? escaped : lost) += pixel.delta_form_factor;
           continue;
@@ -117,6 +118,7 @@ void measure_hemicube_rows(const Elements& elements, const Patches& patches, con
       out.escaped[p] = float(escaped);
       out.lost[p] = float(lost);
       out.rays[p] = uint32_t(pixels.size());
+      out.fates[p] = fates;
     }
     progress.advance(r.size());
   });

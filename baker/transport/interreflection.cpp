@@ -71,6 +71,7 @@ void measure_shared(const Elements& elements, const Patches& patches, const Surf
       out.put(scratch.escaped[p]);
       out.put(scratch.lost[p]);
       out.put(scratch.rays[p]);
+      out.put(scratch.fates[p]);
       MeasuredRow().swap(scratch.rows[p]);
     }
     return out.bytes();
@@ -90,6 +91,7 @@ void measure_shared(const Elements& elements, const Patches& patches, const Surf
       rows.escaped[p] = in.get<float>();
       rows.lost[p] = in.get<float>();
       rows.rays[p] = in.get<uint32_t>();
+      rows.fates[p] = in.get<RayFates>();
     }
   };
   run_shared_stage(stage, team, sharing.store, sharing.resume, tracer, progress);
@@ -153,6 +155,7 @@ MeasuredRows carry_rows(const Patches& coarse, const Patches& fine, const std::v
     out.escaped[to] = rows.escaped[p];
     out.lost[to] = rows.lost[p];
     out.rays[to] = rows.rays[p];
+    out.fates[to] = rows.fates[p];
   }
   std::sort(fresh.begin(), fresh.end());
   return out;

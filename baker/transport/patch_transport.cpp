@@ -32,11 +32,12 @@ bool sees(const RayTracer& tracer, Vec3 from, Vec3 to) {
 // slit was the light of whichever texel's sample sat nearest the edge, so it grew and shrank with
 // the texel density (the Cornell box's ceiling beside a double-sided lamp +62% at 100 texels per
 // metre, +4% at 200). What a 0.1 mm gap truly lets out is a few tenths of a percent of its lamp.
-int64_t element_for_hit(const Elements& e, const Surface& surface, const RayTracer& tracer, const Hit& hit,
-                        uint8_t seen_from) {
-  int64_t j = element_at_point(e, surface, hit.triangle, hit.bary);
-  if (j < 0) return j;
-  if (!(e.flags[size_t(j)] & kNearGeometry)) return ((e.flags[size_t(j)] ^ seen_from) & kUnderCover) ? -1 : j;
+HitElement element_standing_for(const Elements& e, const Surface& surface, const RayTracer& tracer, const Hit& hit,
+                                uint8_t seen_from) {
+  const int64_t j = element_at_point(e, surface, hit.triangle, hit.bary);
+  if (j < 0) return {-1, RayFate::NoElement};
+  const HitElement sealed{-1, RayFate::SealedGap};
+  if (!(e.flags[size_t(j)] & kNearGeometry)) return ((e.flags[size_t(j)] ^ seen_from) & kUnderCover) ? sealed : HitElement{j};
   const uint32_t width = uint32_t(surface.pages[e.page[size_t(j)]].width);
   const std::vector<int32_t>& grid = e.element_at[e.page[size_t(j)]];
   const int64_t x = e.texel[size_t(j)] % width, y = e.texel[size_t(j)] / width, height = int64_t(grid.size() / width);
@@ -55,14 +56,19 @@ int64_t element_for_hit(const Elements& e, const Surface& surface, const RayTrac
   uint8_t side = e.flags[size_t(j)] & kUnderCover;
   if (std::any_of(around, around + count, [&](int32_t k) { return (e.flags[size_t(k)] ^ side) & kUnderCover; }))
     side = under_cover(surface, tracer, hit.triangle, at) ? kUnderCover : 0;
-  if (side != (seen_from & kUnderCover)) return -1;
+  if (side != (seen_from & kUnderCover)) return sealed;
   const bool sees_j = sees(tracer, at, lifted(size_t(j)));
-  if (sees_j && (e.flags[size_t(j)] & kUnderCover) == side) return j;
+  if (sees_j && (e.flags[size_t(j)] & kUnderCover) == side) return {j};
   for (int k = 0; k < count; ++k)
     if (e.valid(size_t(around[k])) && (e.flags[size_t(around[k])] & kUnderCover) == side &&
         sees(tracer, at, lifted(size_t(around[k]))))
-      return around[k];
-  return sees_j ? j : -1;
+      return {around[k]};
+  return sees_j ? HitElement{j} : HitElement{-1, RayFate::OtherSide};
+}
+
+int64_t element_for_hit(const Elements& e, const Surface& surface, const RayTracer& tracer, const Hit& hit,
+                        uint8_t seen_from) {
+  return element_standing_for(e, surface, tracer, hit, seen_from).element;
 }
 
 Landing land(const Elements& elements, const Patches& patches, const Surface& surface, const RayTracer& tracer,
@@ -71,18 +77,35 @@ Landing land(const Elements& elements, const Patches& patches, const Surface& su
   Landing at;
   at.escaped = hit.missed() && !(seen_from & kUnderCover);
   at.distance = hit.missed() ? INFINITY : hit.distance;
-  if (hit.missed() || !hit.front) return at;
-  const int64_t element = element_for_hit(elements, surface, tracer, hit, seen_from);
-  if (element < 0 || patches.patch_of_element[size_t(element)] == UINT32_MAX) return at;
-  at.element = uint32_t(element);
+  if (hit.missed()) {
+    at.fate = at.escaped ? RayFate::Escaped : RayFate::SealedGap;
+    return at;
+  }
+  if (!hit.front) {
+    at.fate = RayFate::BackFace;
+    return at;
+  }
+  const HitElement standing = element_standing_for(elements, surface, tracer, hit, seen_from);
+  if (standing.element < 0) {
+    at.fate = standing.fate;
+    return at;
+  }
+  if (patches.patch_of_element[size_t(standing.element)] == UINT32_MAX) {
+    at.fate = RayFate::BuriedElement;
+    return at;
+  }
+  at.fate = RayFate::TookLight;
+  at.element = uint32_t(standing.element);
   at.patch = patches.patch_of_element[at.element];
   return at;
 }
 
 uint32_t patch_hit(const Elements& elements, const Patches& patches, const Surface& surface,
-                   const RayTracer& tracer, Vec3 origin, Vec3 direction, uint8_t seen_from, bool& escaped) {
+                   const RayTracer& tracer, Vec3 origin, Vec3 direction, uint8_t seen_from, bool& escaped,
+                   RayFates& fates) {
   const Landing at = land(elements, patches, surface, tracer, origin, direction, seen_from);
   escaped = at.escaped;
+  fates.add(at.fate);
   return at.patch;
 }
 
@@ -239,6 +262,7 @@ PatchTransport balanced_transport(const Patches& patches, MeasuredRows measured)
   out.escaped = std::move(measured.escaped);
   out.lost = std::move(measured.lost);
   out.rays = std::move(measured.rays);
+  for (const RayFates& f : measured.fates) out.fates += f;
   balance_reciprocity(patches, std::move(measured.rows), out);
   return out;
 }
@@ -274,6 +298,7 @@ void measure_ray_cast_rows(const Elements& elements, const Patches& patches, con
       Rng rng(seed, Stream::PatchRays, p);
       const uint32_t origin_pattern = rng.next_u32(), direction_pattern = rng.next_u32();
       uint32_t escaped = 0, lost = 0;
+      RayFates fates;
       for (uint32_t k = 0; k < rays; ++k) {
         // Stratified over the patch's area, then within the chosen element's footprint.
         double pick = (k + rng.uniform()) / rays * total;
@@ -285,7 +310,7 @@ void measure_ray_cast_rows(const Elements& elements, const Patches& patches, con
         origin += ng * elements.offset[i];
         Vec3 dir = hemisphere_direction(elements.normal[i], ng, cmj_sample(k, rays, direction_pattern));
         bool left;
-        uint32_t q = patch_hit(elements, patches, surface, tracer, origin, dir, elements.flags[i], left);
+        uint32_t q = patch_hit(elements, patches, surface, tracer, origin, dir, elements.flags[i], left, fates);
         if (q == UINT32_MAX) {
           escaped += left;
           lost += !left;
@@ -296,6 +321,7 @@ void measure_ray_cast_rows(const Elements& elements, const Patches& patches, con
       s.tally.take(out.rows[p], float(rays));
       out.escaped[p] = float(escaped) / float(rays);
       out.lost[p] = float(lost) / float(rays);
+      out.fates[p] = fates;
     }
     progress.advance(r.size());
   });

@@ -12,6 +12,7 @@
 #include "baker/surface/elements.h"
 #include "baker/surface/ray_tracer.h"
 #include "baker/transport/patches.h"
+#include "baker/transport/ray_fates.h"
 #include "base/progress.h"
 
 namespace radbake {
@@ -25,6 +26,7 @@ struct PatchTransport {
   std::vector<float> escaped;  // per patch: share of its light that left the scene
   std::vector<float> lost;     // per patch: share that struck back faces or buried texels
   std::vector<uint32_t> rays;  // per patch
+  RayFates fates;              // where every patch's rays (or hemicube pixels) ended
 };
 
 // Groups of patches that exchange light, directly or through one another (connected through the
@@ -43,12 +45,14 @@ struct MeasuredRows {
   std::vector<MeasuredRow> rows;  // per patch
   std::vector<float> escaped, lost;
   std::vector<uint32_t> rays;
+  std::vector<RayFates> fates;  // per patch, of the rays its row was measured with
 
   void resize(size_t patches) {
     rows.resize(patches);
     escaped.resize(patches);
     lost.resize(patches);
     rays.resize(patches);
+    fates.resize(patches);
   }
 };
 
@@ -106,6 +110,14 @@ int64_t element_for_hit(const Elements& elements, const Surface& surface, const 
                         uint8_t seen_from);
 constexpr uint8_t kFromTheOpen = 0;  // seen_from for a point off the surfaces (sensors, probes, eyes)
 
+// element_for_hit's answer with, for none, why: NoElement, OtherSide or SealedGap.
+struct HitElement {
+  int64_t element = -1;
+  RayFate fate = RayFate::TookLight;
+};
+HitElement element_standing_for(const Elements& elements, const Surface& surface, const RayTracer& tracer,
+                                const Hit& hit, uint8_t seen_from);
+
 // Where a ray from `origin` in `direction` lands: the element and patch it struck (UINT32_MAX for
 // none: it left the scene, or struck a back face, a buried texel or the far side of a thin gap's
 // mouth) and how far away (infinite if it left). `seen_from`: the origin's element's flags (only
@@ -114,13 +126,15 @@ struct Landing {
   uint32_t element = UINT32_MAX, patch = UINT32_MAX;
   float distance = 0;  // metres
   bool escaped = false;
+  RayFate fate = RayFate::Escaped;
 };
 Landing land(const Elements& elements, const Patches& patches, const Surface& surface, const RayTracer& tracer,
              Vec3 origin, Vec3 direction, uint8_t seen_from);
 
 // Where a ray from `origin` in `direction` lands, as `land` has it: the patch it struck, or
-// UINT32_MAX with `escaped` telling whether it left the scene (else it was lost).
+// UINT32_MAX with `escaped` telling whether it left the scene (else it was lost); its fate tallied.
 uint32_t patch_hit(const Elements& elements, const Patches& patches, const Surface& surface,
-                   const RayTracer& tracer, Vec3 origin, Vec3 direction, uint8_t seen_from, bool& escaped);
+                   const RayTracer& tracer, Vec3 origin, Vec3 direction, uint8_t seen_from, bool& escaped,
+                   RayFates& fates);
 
 }  // namespace radbake

@@ -22,7 +22,8 @@ namespace radbake {
 namespace {
 
 constexpr char kMagic[8] = {'r', 'a', 'd', 'b', 'a', 'k', 'e', 'C'};
-constexpr uint32_t kVersion = 1;
+// 2: form factor rows and gather chunks keep where their rays ended (ray_fates.h).
+constexpr uint32_t kVersion = 2;
 const char* kManifest = "checkpoint.json";
 constexpr uint64_t kMostManifestBytes = 1 << 20;  // it holds a fingerprint, a scene's name and a version
 

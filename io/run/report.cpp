@@ -1,6 +1,7 @@
 #include "io/run/report.h"
 #include "io/files/written_file.h"
 
+#include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
@@ -86,7 +87,17 @@ nlohmann::ordered_json surfaces_json(const std::vector<SurfaceStatistics>& surfa
   nlohmann::ordered_json out = nlohmann::ordered_json::array();
   for (const SurfaceStatistics& s : surfaces)
     out.push_back({{"name", s.name}, {"area_m2", s.area}, {"mean_lx", s.mean}, {"min_lx", s.min},
-                   {"max_lx", s.max}, {"uniformity_min_over_mean", s.uniformity}});
+                   {"max_lx", s.max}, {"uniformity_min_over_mean", s.uniformity},
+                   {"open_view", std::isfinite(s.open_view) ? nlohmann::ordered_json(s.open_view) : nullptr}});
+  return out;
+}
+
+// Shares of all rays; null when the bake cast none (no interreflection, or the path tracer).
+nlohmann::ordered_json ray_fates_json(const RayFates& fates) {
+  if (fates.total() == 0) return nullptr;
+  nlohmann::ordered_json out = {{"rays", fates.total()}};
+  for (size_t k = 0; k < kRayFateCount; ++k) out[kRayFateNames[k]] = fates.share(RayFate(k));
+  out["front_face_took_none"] = double(fates.front_face_took_none()) / double(fates.total());
   return out;
 }
 
@@ -173,7 +184,8 @@ void write_report(const std::string& path, const RunInfo& run, const Scene& scen
                   {"moved_samples", bake.moved_samples}, {"filtered_texels", bake.filtered_texels},
                   {"patches", bake.patches},
                   {"patch_block_texels", bake.patch_block_size}, {"rays", bake.rays},
-                  {"gather_rays_lost_to_back_faces", bake.gather_back_face_fraction}}},
+                  {"gather_rays", ray_fates_json(bake.gather_rays)},
+                  {"form_factor_rays", ray_fates_json(bake.form_factor_rays)}}},
       {"subdivision", subdivision},
       {"seconds", stages},
       {"distribution", distribution},

@@ -198,6 +198,10 @@ TEST(Cli, PathTracingStatesItsNoiseAndFallsWithMoreSamples) {
   EXPECT_EQ(a["options"]["method"], "pathtrace");
   EXPECT_EQ(a["path_tracing"]["samples_per_texel"], 16);
   EXPECT_FALSE(a["energy_balance"]["measured"].get<bool>());
+  // No gather and no form factors: their rays and the surfaces' open view are not measured.
+  EXPECT_TRUE(a["counts"]["gather_rays"].is_null());
+  EXPECT_TRUE(a["counts"]["form_factor_rays"].is_null());
+  EXPECT_TRUE(a["surfaces"][0]["open_view"].is_null());
   // Four times the paths, half the noise (within 20% over these few hundred texels).
   EXPECT_NEAR(b["path_tracing"]["relative_noise"].get<double>() / a["path_tracing"]["relative_noise"].get<double>(), 0.5, 0.1);
   Outcome wrong = radbake(bake + "/wrong --method montecarlo");
@@ -242,6 +246,29 @@ TEST(Cli, BakeWritesTheFolderAndReportsProgressAsPlainLines) {
   EXPECT_TRUE(report["seconds"].contains("final gather"));
   EXPECT_EQ(report["lightmaps"]["unit"], "lx");
   EXPECT_EQ(report["options"]["solver"], "shooting");
+  // Where the rays ended: shares of each kind's rays that add up to all of them. The box is open
+  // at the front (some escape) and its texels stand for every point of its walls (none lost).
+  for (const char* kind : {"gather_rays", "form_factor_rays"}) {
+    const nlohmann::json& fates = report["counts"][kind];
+    ASSERT_TRUE(fates.is_object()) << kind;
+    EXPECT_GT(fates["rays"].get<double>(), 1e5) << kind;
+    double sum = 0;
+    for (const char* fate : {"took_light", "escaped", "back_face", "no_element", "buried_element", "other_side",
+                             "sealed_gap"})
+      sum += fates[fate].get<double>();
+    EXPECT_NEAR(sum, 1.0, 1e-9) << kind;
+    EXPECT_GT(fates["escaped"].get<double>(), 0.05) << kind;
+    EXPECT_LT(fates["front_face_took_none"].get<double>(), 1e-3) << kind;
+  }
+  // Each surface sees some of the open through the box's front, none most of it.
+  double open_view_sum = 0;
+  for (const nlohmann::json& surface : report["surfaces"]) {
+    const double open = surface["open_view"].get<double>();
+    EXPECT_GE(open, 0.0);
+    EXPECT_LT(open, 0.5) << surface["name"];
+    open_view_sum += open;
+  }
+  EXPECT_GT(open_view_sum, 0.0);
   EXPECT_EQ(leftovers(parent), 0u);
 }
 
