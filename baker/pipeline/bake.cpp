@@ -214,7 +214,7 @@ std::optional<GatheredLight> shared_gather(const Elements& elements, const Patch
   if (team.first()) indirect.put_vector(gathered_irradiance(patches, transport, patch_exitance));
   team.broadcast_from_first("final gather", indirect.bytes());
   const GatherInputs inputs =
-      gather_inputs(elements, patches, surface, ByteReader(indirect.bytes()).get_vector<Rgb>());
+      gather_inputs(elements, patches, surface, ByteReader(indirect.bytes()).get_vector<Rgb>(), direct);
   const size_t n = elements.size();
   const bool directional = options.directional != Directional::None;
   const std::vector<size_t> starts = texel_chunk_starts(elements, true);
@@ -564,7 +564,8 @@ BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& given
   }
   result.display_camera = clock.run("display camera", [&] { return display_camera(scene, surface, *tracer); });
   result.display_view = clock.run("display view", [&] { return display_view(scene, result.display_camera, surface, *tracer); });
-  report.surfaces = surface_statistics(scene, surface, elements, result.irradiance, result.open_view);
+  report.surfaces =
+      surface_statistics(scene, surface, elements, result.irradiance, result.open_view, result.standard_error);
 
   for (const AtlasPage& p : surface.pages) report.page_texels += size_t(p.width) * p.height;
   report.elements = n;

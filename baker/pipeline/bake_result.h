@@ -20,7 +20,7 @@
 #include "baker/surface/light_direction.h"
 #include "baker/transport/energy_balance.h"
 #include "baker/transport/interreflection.h"
-#include "baker/transport/ray_fates.h"
+#include "baker/surface/ray_fates.h"
 #include "base/math.h"
 
 namespace radbake {

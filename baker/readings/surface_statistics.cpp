@@ -7,9 +7,11 @@ namespace radbake {
 
 std::vector<SurfaceStatistics> surface_statistics(const Scene& scene, const Surface& surface,
                                                   const Elements& elements, const std::vector<Rgb>& irradiance,
-                                                  const std::vector<float>& open_view) {
+                                                  const std::vector<float>& open_view,
+                                                  const std::vector<float>& standard_error) {
   std::vector<SurfaceStatistics> out(scene.instances.size());
-  std::vector<double> weighted(scene.instances.size(), 0.0), open(scene.instances.size(), 0.0);
+  std::vector<double> weighted(scene.instances.size(), 0.0), open(scene.instances.size(), 0.0),
+      variance(scene.instances.size(), 0.0);
   for (size_t k = 0; k < out.size(); ++k) {
     const MeshInstance& inst = scene.instances[k];
     out[k].instance = int(k);
@@ -23,6 +25,7 @@ std::vector<SurfaceStatistics> surface_statistics(const Scene& scene, const Surf
     s.area += elements.area[i];
     weighted[size_t(s.instance)] += lux * elements.area[i];
     if (!open_view.empty()) open[size_t(s.instance)] += double(open_view[i]) * elements.area[i];
+    if (!standard_error.empty()) variance[size_t(s.instance)] += std::pow(double(standard_error[i]) * elements.area[i], 2);
     s.min = std::min(s.min, lux);
     s.max = std::max(s.max, lux);
   }
@@ -32,6 +35,7 @@ std::vector<SurfaceStatistics> surface_statistics(const Scene& scene, const Surf
     s.mean = weighted[size_t(s.instance)] / s.area;
     s.uniformity = s.mean > 0 ? s.min / s.mean : 0.0;
     s.open_view = open_view.empty() ? NAN : open[size_t(s.instance)] / s.area;
+    s.standard_error = standard_error.empty() ? NAN : std::sqrt(variance[size_t(s.instance)]) / s.area;
     kept.push_back(std::move(s));
   }
   return kept;

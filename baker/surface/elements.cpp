@@ -29,14 +29,12 @@ bool inside(Vec2 bary, float slack = 0) {
   return bary.x >= -slack && bary.y >= -slack && bary.x + bary.y <= 1 + slack;
 }
 
-// How far rays start above the surface: a fraction of the texel, but never below what float
-// precision at this distance from the origin can resolve (scenes in kilometres stay clean).
+}  // namespace
+
 float ray_offset(Vec3 p, float texel_size) {
   float magnitude = std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
   return std::max(1e-3f * texel_size, 64.0f * magnitude * 1.2e-7f);
 }
-
-}  // namespace
 
 Elements build_elements(const Surface& surface, const MaterialSampler& materials, const ElementOptions& options,
                         Progress& progress) {
@@ -162,6 +160,15 @@ Elements build_elements(const Surface& surface, const MaterialSampler& materials
     }
   });
   for (size_t i = 0; i < n; ++i) e.element_at[e.page[i]][e.texel[i]] = int32_t(i);
+  for (size_t i = 0; i < n; ++i) {
+    if ((e.flags[i] & kFlatTexel) || group_start[i + 1] - group_start[i] < 2) continue;
+    const size_t first = e.other_pieces.size();
+    for (uint32_t k = group_start[i]; k < group_start[i + 1]; ++k)
+      e.other_pieces.push_back({uint32_t(i), pieces[k].triangle, lightmap_bary(surface, pieces[k].triangle, pieces[k].centroid),
+                                pieces[k].area});
+    std::sort(e.other_pieces.begin() + std::ptrdiff_t(first), e.other_pieces.end(),
+              [](const Elements::Piece& a, const Elements::Piece& b) { return a.area > b.area; });
+  }
   progress.end();
   return e;
 }

@@ -49,6 +49,16 @@ struct Elements {
   std::vector<uint16_t> visible_cells;
   // Per page, texel -> element index or -1.
   std::vector<std::vector<int32_t>> element_at;
+  // Of the texels that hold more than one triangle and are not one plane, each piece, by element,
+  // largest first: where place_samples moves a sample that lies buried (a window frame's face
+  // pressed against its reveal, its stepped profile, finer than a texel, hinged onto it). Built by
+  // build_elements for place_samples, which empties it.
+  struct Piece {
+    uint32_t element, triangle;
+    Vec2 bary;   // the piece's centroid on its triangle
+    float area;  // texels^2 of the page
+  };
+  std::vector<Piece> other_pieces;
 
   size_t size() const { return area.size(); }
   bool valid(size_t i) const { return !(flags[i] & kBuried); }
@@ -73,6 +83,10 @@ struct ElementOptions {
   FootprintFilter filter = FootprintFilter::WhereMaterialsVary;
 };
 
+// How far rays start above a surface point: a fraction of the texel, but never below what float
+// precision at this distance from the origin can resolve (scenes in kilometres stay clean).
+float ray_offset(Vec3 p, float texel_size);
+
 // Rasterises every triangle into its page and makes one element per covered texel.
 Elements build_elements(const Surface& surface, const MaterialSampler& materials, const ElementOptions& options,
                         Progress& progress);
@@ -90,6 +104,16 @@ void place_samples(Elements& elements, const Surface& surface, const RayTracer& 
 // within a sixteenth of a texel along the triangle's normal: a gap so thin that its light stays in
 // it. Mixed with the open surface beside it, in a texel across its edge, it would be shone out.
 bool under_cover(const Surface& surface, const RayTracer& tracer, uint32_t triangle, Vec3 point);
+
+// Whether point `to` on triangle `to_triangle` is in sight of point `from` on `from_triangle` (both
+// lifted off their surfaces) within one texel's surface. A chart is one piece of surface under its
+// texels, its slivers hinged on whatever their angle (a window frame's stepped profile onto its
+// face): its own steps and corners are the detail a texel stands for, so between two points of
+// one chart whose faces are less than 120 degrees apart its own faces do not block the line. Faces
+// further apart are two sides of something thin (a door leaf, a table top, both faces in one
+// chart), and the line between them passes through it: there every face blocks.
+bool sees_within_texel(const Surface& surface, const RayTracer& tracer, Vec3 from, uint32_t from_triangle, Vec3 to,
+                       uint32_t to_triangle);
 
 // The element whose texel holds point `bary` of `triangle` (buried ones included), or -1.
 int64_t element_at_point(const Elements& elements, const Surface& surface, uint32_t triangle, Vec2 bary);

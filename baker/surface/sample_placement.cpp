@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <utility>
 
 #include "baker/surface/elements.h"
 #include "baker/surface/ray_tracer.h"
@@ -33,6 +35,25 @@ constexpr uint32_t kCoverShareProbes = 64;
 
 bool under_cover(const Surface& surface, const RayTracer& tracer, uint32_t triangle, Vec3 point) {
   return tracer.occluded(point, surface.normal[triangle], 0.0f, kCoverReach * surface.texel_size(triangle));
+}
+
+bool sees_within_texel(const Surface& surface, const RayTracer& tracer, Vec3 from, uint32_t from_triangle, Vec3 to,
+                       uint32_t to_triangle) {
+  Vec3 d = to - from;
+  const float distance = length(d);
+  if (!(distance > 0)) return true;
+  d = d / distance;
+  const uint32_t chart = surface.chart[from_triangle];
+  if (chart != surface.chart[to_triangle] || dot(surface.normal[from_triangle], surface.normal[to_triangle]) < -0.5f)
+    return !tracer.occluded(from, d, 0.0f, distance);
+  float start = 0;
+  for (int crossed = 0; crossed < 16; ++crossed) {
+    const Hit hit = tracer.intersect(from, d, start, distance);
+    if (hit.missed()) return true;
+    if (surface.chart[hit.triangle] != chart) return false;
+    start = std::nextafter(hit.distance, INFINITY);
+  }
+  return false;
 }
 
 namespace {
@@ -120,6 +141,148 @@ CoverSplit split_at_cover(const Elements& e, const Surface& surface, const RayTr
   return split;
 }
 
+
+// Whether a point (lifted off its surface, normal ng) is inside geometry: it sees back faces in
+// half its hemisphere.
+bool buried_at(const RayTracer& tracer, Vec3 point, Vec3 ng, uint32_t pattern) {
+  int back = 0;
+  for (int k = 0; k < kBurialProbes; ++k) {
+    const Hit hit = tracer.intersect(point, cosine_direction(ng, cmj_sample(uint32_t(k), kBurialProbes, pattern)), 0.0f, INFINITY);
+    back += !hit.missed() && !hit.front;
+  }
+  return back >= kBuriedBackfaceFraction * kBurialProbes;
+}
+
+// Settles element i's sample where it lies: pushed past a wall standing on the surface, marked
+// near geometry, under a cover or buried, its footprint cut to the cells the sample sees along the
+// surface (its area scaled to match). Returns its cover: 0 in the open, 1 under a cover within
+// kPatchCoverReach, 2 within kCoverReach.
+uint8_t settle_sample(Elements& e, const Surface& surface, const RayTracer& tracer, size_t i, uint32_t pattern) {
+  const uint32_t t = e.triangle[i];
+  const Vec3 ng = surface.normal[t];
+  const float texel_size = surface.texel_size(t);
+  const float eps = e.offset[i];
+  Vec3 tangent, bitangent;
+  orthonormal_basis(ng, tangent, bitangent);
+
+  // Along the surface, half a texel diagonal each way: a back face that close means the texel
+  // centre lies behind a wall standing on this surface; step past the nearest one.
+  const float reach = 0.75f * texel_size;
+  Vec3 origin = e.position[i] + ng * eps;
+  float nearest_back = INFINITY;
+  Vec3 escape{};
+  for (int k = 0; k < kTangentProbes; ++k) {
+    float angle = 2.0f * kPi * k / kTangentProbes;
+    Vec3 dir = tangent * std::cos(angle) + bitangent * std::sin(angle);
+    Hit hit = tracer.intersect(origin, dir, 0.0f, reach);
+    if (hit.missed()) continue;
+    e.flags[i] |= kNearGeometry;
+    if (!hit.front && hit.distance < nearest_back) {
+      nearest_back = hit.distance;
+      escape = dir;
+    }
+  }
+  if (std::isfinite(nearest_back)) {
+    e.position[i] = e.position[i] + escape * (nearest_back + 2 * eps);
+    e.flags[i] |= kPushedOut;
+  }
+  // The tangent probes pass under a cover (a lamp 0.1 mm under the ceiling): look along the normal.
+  uint8_t cover = 0;
+  const Hit over = tracer.intersect(e.position[i] + ng * eps, ng, 0.0f, kPatchCoverReach * texel_size);
+  if (!over.missed()) cover = over.distance < kCoverReach * texel_size ? 2 : 1;
+  if (cover == 2) e.flags[i] |= kUnderCover;
+
+  // Part of a texel that straddles a wall lies behind it and gets no light from this side:
+  // keep only the area the sample point can see along the surface, or light is
+  // over-counted (the energy balance shows it) on every texel around a block's foot.
+  if (e.flags[i] & kNearGeometry) {
+    const int k = kFootprintCells;
+    int on_surface = 0, visible = 0;
+    e.visible_cells[i] = 0;
+    for (int sy = 0; sy < k; ++sy)
+      for (int sx = 0; sx < k; ++sx) {
+        Vec3 p;
+        if (!footprint_surface_point(e, surface, i, {(sx + 0.5f) / k, (sy + 0.5f) / k}, p)) continue;
+        ++on_surface;
+        const Vec3 from = e.position[i] + ng * eps, to = p + ng * eps;
+        if (length(to - from) <= eps || sees_within_texel(surface, tracer, from, t, to, t)) {
+          ++visible;
+          e.visible_cells[i] |= uint16_t(1u << (sy * k + sx));
+        }
+      }
+    if (on_surface > 0) e.area[i] *= float(visible) / float(on_surface);
+    if (visible == 0) e.flags[i] |= kBuried;  // all of it is behind the wall
+  }
+
+  if (buried_at(tracer, e.position[i] + ng * eps, ng, pattern)) e.flags[i] |= kBuried;
+  return cover;
+}
+
+// What settle_sample changes of an element.
+struct Sample {
+  uint32_t triangle;
+  Vec3 position, normal;
+  float offset, area;
+  uint8_t flags;
+  uint16_t visible_cells;
+
+  static Sample of(const Elements& e, size_t i) {
+    return {e.triangle[i], e.position[i], e.normal[i], e.offset[i], e.area[i], e.flags[i], e.visible_cells[i]};
+  }
+  void put(Elements& e, size_t i) const {
+    e.triangle[i] = triangle, e.position[i] = position, e.normal[i] = normal, e.offset[i] = offset;
+    e.area[i] = area, e.flags[i] = flags, e.visible_cells[i] = visible_cells;
+  }
+};
+
+// Element i's pieces in Elements::other_pieces (sorted by element).
+std::pair<const Elements::Piece*, const Elements::Piece*> pieces_of(const Elements& e, size_t i) {
+  const Elements::Piece *begin = e.other_pieces.data(), *end = begin + e.other_pieces.size();
+  const Elements::Piece* first =
+      std::lower_bound(begin, end, uint32_t(i), [](const Elements::Piece& p, uint32_t k) { return p.element < k; });
+  const Elements::Piece* last = first;
+  while (last != end && last->element == i) ++last;
+  return {first, last};
+}
+
+// A texel whose sample lies buried may still hold surface in the open: another of its pieces (a
+// window frame's face pressed against its reveal, its profile hinged onto it) or the rest of its
+// own triangle (a slab's texel half under a wall). Left buried, every ray striking the open part
+// took no light, and the light a path tracer finds reflected there was missing from the rooms at
+// every bounce. The sample moves to the largest other piece, then to the first quarter of its own
+// triangle's footprint, that settles unburied; `buried` is the sample as it first settled, put
+// back when none does. Returns the cover where it settles.
+uint8_t move_buried_sample(Elements& e, const Surface& surface, const RayTracer& tracer, size_t i, uint32_t pattern,
+                           const Sample& buried) {
+  const uint8_t kept_flags = buried.flags & (kFiltered | kFlatTexel);
+  const float area = e.area[i];
+  auto settled_at = [&](uint32_t t, Vec3 position) {
+    e.triangle[i] = t;
+    e.position[i] = position;
+    e.normal[i] = surface.shading_normal(t, barycentric(&surface.corners[3 * t], position));
+    if (!(dot(e.normal[i], surface.normal[t]) > 0)) e.normal[i] = surface.normal[t];
+    e.offset[i] = ray_offset(position, surface.texel_size(t));
+    e.flags[i] = kept_flags | kPushedOut;
+    e.visible_cells[i] = 0xffff;
+    e.area[i] = area;
+    const uint8_t cover = settle_sample(e, surface, tracer, i, pattern);
+    return e.valid(i) && e.area[i] > 0 ? std::optional<uint8_t>(cover) : std::nullopt;
+  };
+  const auto [first, last] = pieces_of(e, i);
+  for (const Elements::Piece* p = first; p != last; ++p)
+    if (p->triangle != buried.triangle)
+      if (auto cover = settled_at(p->triangle, surface.point(p->triangle, p->bary))) return *cover;
+  for (Vec2 u : {Vec2{0.25f, 0.25f}, Vec2{0.75f, 0.25f}, Vec2{0.25f, 0.75f}, Vec2{0.75f, 0.75f}}) {
+    buried.put(e, i);
+    e.area[i] = area;
+    Vec3 point;
+    if (!footprint_surface_point(e, surface, i, u, point)) continue;
+    if (auto cover = settled_at(buried.triangle, point)) return *cover;
+  }
+  buried.put(e, i);
+  return 0;
+}
+
 }  // namespace
 
 void place_samples(Elements& e, const Surface& surface, const RayTracer& tracer, uint64_t seed, Progress& progress) {
@@ -129,73 +292,13 @@ void place_samples(Elements& e, const Surface& surface, const RayTracer& tracer,
   progress.begin("sample placement", n);
   tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 512), [&](const tbb::blocked_range<size_t>& r) {
     for (size_t i = r.begin(); i < r.end(); ++i) {
-      const uint32_t t = e.triangle[i];
-      const Vec3 ng = surface.normal[t];
-      const float texel_size = surface.texel_size(t);
-      const float eps = e.offset[i];
-      Vec3 tangent, bitangent;
-      orthonormal_basis(ng, tangent, bitangent);
-
-      // Along the surface, half a texel diagonal each way: a back face that close means the texel
-      // centre lies behind a wall standing on this surface; step past the nearest one.
-      const float reach = 0.75f * texel_size;
-      Vec3 origin = e.position[i] + ng * eps;
-      float nearest_back = INFINITY;
-      Vec3 escape{};
-      for (int k = 0; k < kTangentProbes; ++k) {
-        float angle = 2.0f * kPi * k / kTangentProbes;
-        Vec3 dir = tangent * std::cos(angle) + bitangent * std::sin(angle);
-        Hit hit = tracer.intersect(origin, dir, 0.0f, reach);
-        if (hit.missed()) continue;
-        e.flags[i] |= kNearGeometry;
-        if (!hit.front && hit.distance < nearest_back) {
-          nearest_back = hit.distance;
-          escape = dir;
-        }
-      }
-      if (std::isfinite(nearest_back)) {
-        e.position[i] = e.position[i] + escape * (nearest_back + 2 * eps);
-        e.flags[i] |= kPushedOut;
-      }
-      // The tangent probes pass under a cover (a lamp 0.1 mm under the ceiling): look along the normal.
-      const Hit over = tracer.intersect(e.position[i] + ng * eps, ng, 0.0f, kPatchCoverReach * texel_size);
-      if (!over.missed()) cover[i] = over.distance < kCoverReach * texel_size ? 2 : 1;
-      if (cover[i] == 2) e.flags[i] |= kUnderCover;
-
-      // Part of a texel that straddles a wall lies behind it and gets no light from this side:
-      // keep only the area the sample point can see along the surface, or light is
-      // over-counted (the energy balance shows it) on every texel around a block's foot.
-      if (e.flags[i] & kNearGeometry) {
-        const int k = kFootprintCells;
-        int on_surface = 0, visible = 0;
-        e.visible_cells[i] = 0;
-        for (int sy = 0; sy < k; ++sy)
-          for (int sx = 0; sx < k; ++sx) {
-            Vec3 p;
-            if (!footprint_surface_point(e, surface, i, {(sx + 0.5f) / k, (sy + 0.5f) / k}, p)) continue;
-            ++on_surface;
-            Vec3 from = e.position[i] + ng * eps, to = p + ng * eps;
-            Vec3 d = to - from;
-            float dist = length(d);
-            if (dist <= eps || !tracer.occluded(from, d / dist, 0.0f, dist)) {
-              ++visible;
-              e.visible_cells[i] |= uint16_t(1u << (sy * k + sx));
-            }
-          }
-        if (on_surface > 0) e.area[i] *= float(visible) / float(on_surface);
-        if (visible == 0) e.flags[i] |= kBuried;  // all of it is behind the wall
-      }
-
-      Rng rng(seed, Stream::Probe, i);
-      uint32_t pattern = rng.next_u32();
-      int back = 0;
-      Vec3 from = e.position[i] + ng * eps;
-      for (int k = 0; k < kBurialProbes; ++k) {
-        Vec3 dir = cosine_direction(ng, cmj_sample(uint32_t(k), kBurialProbes, pattern));
-        Hit hit = tracer.intersect(from, dir, 0.0f, INFINITY);
-        back += !hit.missed() && !hit.front;
-      }
-      if (back >= kBuriedBackfaceFraction * kBurialProbes) e.flags[i] |= kBuried;
+      const uint32_t pattern = Rng(seed, Stream::Probe, i).next_u32();
+      const float area = e.area[i];
+      cover[i] = settle_sample(e, surface, tracer, i, pattern);
+      if (e.valid(i)) continue;
+      Sample buried = Sample::of(e, i);
+      e.area[i] = area;
+      cover[i] = move_buried_sample(e, surface, tracer, i, pattern, buried);
     }
     progress.advance(r.size());
   });
@@ -241,16 +344,15 @@ void place_samples(Elements& e, const Surface& surface, const RayTracer& tracer,
           continue;
         bool joined = true;
         if ((e.flags[i] | e.flags[size_t(j)]) & kNearGeometry) {
-          Vec3 from = e.position[i] + surface.normal[e.triangle[i]] * e.offset[i];
-          Vec3 to = e.position[size_t(j)] + surface.normal[e.triangle[size_t(j)]] * e.offset[size_t(j)];
-          Vec3 d = to - from;
-          float dist = length(d);
-          joined = !(dist > 0) || !tracer.occluded(from, d / dist, 0.0f, dist);
+          const Vec3 from = e.position[i] + surface.normal[e.triangle[i]] * e.offset[i];
+          const Vec3 to = e.position[size_t(j)] + surface.normal[e.triangle[size_t(j)]] * e.offset[size_t(j)];
+          joined = sees_within_texel(surface, tracer, from, e.triangle[i], to, e.triangle[size_t(j)]);
         }
         if (joined) e.flags[i] |= bits[k];
       }
     }
   });
+  std::vector<Elements::Piece>().swap(e.other_pieces);
   progress.end();
 }
 

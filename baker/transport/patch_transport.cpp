@@ -10,67 +10,6 @@
 
 namespace radbake {
 
-namespace {
-
-bool sees(const RayTracer& tracer, Vec3 from, Vec3 to) {
-  Vec3 d = to - from;
-  float dist = length(d);
-  return !(dist > 0) || !tracer.occluded(from, d / dist, 0.0f, dist);
-}
-
-}  // namespace
-
-// Where a wall crosses a texel, the texel's element lies on one side only; a hit on the other side
-// belongs to the neighbour on its own side (or to nobody), never to the element behind the wall,
-// or light would pass through the wall. Likewise across a cover's edge: a hit in the gap belongs
-// to a texel under the cover, one in the open to a texel in the open; where no neighbour holds the
-// hit's side, the texel keeps it.
-//
-// A gap thinner than a sixteenth of a texel (kUnderCover) is sealed: a ray from the open that
-// enters its slit, or one from inside that leaves by it, strikes nobody. Texels cannot resolve the
-// light along such a gap, which falls off within a few gap heights of its mouth: what crossed the
-// slit was the light of whichever texel's sample sat nearest the edge, so it grew and shrank with
-// the texel density (the Cornell box's ceiling beside a double-sided lamp +62% at 100 texels per
-// metre, +4% at 200). What a 0.1 mm gap truly lets out is a few tenths of a percent of its lamp.
-HitElement element_standing_for(const Elements& e, const Surface& surface, const RayTracer& tracer, const Hit& hit,
-                                uint8_t seen_from) {
-  const int64_t j = element_at_point(e, surface, hit.triangle, hit.bary);
-  if (j < 0) return {-1, RayFate::NoElement};
-  const HitElement sealed{-1, RayFate::SealedGap};
-  if (!(e.flags[size_t(j)] & kNearGeometry)) return ((e.flags[size_t(j)] ^ seen_from) & kUnderCover) ? sealed : HitElement{j};
-  const uint32_t width = uint32_t(surface.pages[e.page[size_t(j)]].width);
-  const std::vector<int32_t>& grid = e.element_at[e.page[size_t(j)]];
-  const int64_t x = e.texel[size_t(j)] % width, y = e.texel[size_t(j)] / width, height = int64_t(grid.size() / width);
-  int32_t around[8];
-  int count = 0;
-  for (int64_t dy = -1; dy <= 1; ++dy)
-    for (int64_t dx = -1; dx <= 1; ++dx) {
-      if ((dx == 0 && dy == 0) || x + dx < 0 || y + dy < 0 || x + dx >= width || y + dy >= height) continue;
-      int32_t k = grid[size_t((y + dy) * width + x + dx)];
-      if (k >= 0 && surface.chart[e.triangle[size_t(k)]] == surface.chart[hit.triangle]) around[count++] = k;
-    }
-  const Vec3 at = surface.point(hit.triangle, hit.bary) + surface.normal[hit.triangle] * e.offset[size_t(j)];
-  auto lifted = [&](size_t k) { return e.position[k] + surface.normal[e.triangle[k]] * e.offset[k]; };
-  // Only where a cover's edge passes by (place_samples split the texels there) can the hit lie on
-  // the other side of one from j.
-  uint8_t side = e.flags[size_t(j)] & kUnderCover;
-  if (std::any_of(around, around + count, [&](int32_t k) { return (e.flags[size_t(k)] ^ side) & kUnderCover; }))
-    side = under_cover(surface, tracer, hit.triangle, at) ? kUnderCover : 0;
-  if (side != (seen_from & kUnderCover)) return sealed;
-  const bool sees_j = sees(tracer, at, lifted(size_t(j)));
-  if (sees_j && (e.flags[size_t(j)] & kUnderCover) == side) return {j};
-  for (int k = 0; k < count; ++k)
-    if (e.valid(size_t(around[k])) && (e.flags[size_t(around[k])] & kUnderCover) == side &&
-        sees(tracer, at, lifted(size_t(around[k]))))
-      return {around[k]};
-  return sees_j ? HitElement{j} : HitElement{-1, RayFate::OtherSide};
-}
-
-int64_t element_for_hit(const Elements& e, const Surface& surface, const RayTracer& tracer, const Hit& hit,
-                        uint8_t seen_from) {
-  return element_standing_for(e, surface, tracer, hit, seen_from).element;
-}
-
 Landing land(const Elements& elements, const Patches& patches, const Surface& surface, const RayTracer& tracer,
              Vec3 origin, Vec3 direction, uint8_t seen_from) {
   const Hit hit = tracer.intersect_light_path(origin, direction, 0.0f, INFINITY);

@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "baker/surface/elements.h"
+#include "baker/surface/hit_element.h"
 #include "baker/surface/ray_tracer.h"
 #include "baker/transport/patches.h"
-#include "baker/transport/ray_fates.h"
 #include "base/progress.h"
 
 namespace radbake {
@@ -102,21 +102,6 @@ PatchTransport balanced_transport(const Patches& patches, MeasuredRows measured)
 
 // 0, 1, ..., n - 1: every patch.
 std::vector<uint32_t> all_patches(size_t n);
-
-// The element that stands for a hit point (the texel's on the hit's side of any wall or cover
-// crossing it), or -1 for none. `seen_from` is the ray origin's kUnderCover flag (0 in the open): a
-// hit across the mouth of a thin gap, in it from the open or out of it from inside, is none.
-int64_t element_for_hit(const Elements& elements, const Surface& surface, const RayTracer& tracer, const Hit& hit,
-                        uint8_t seen_from);
-constexpr uint8_t kFromTheOpen = 0;  // seen_from for a point off the surfaces (sensors, probes, eyes)
-
-// element_for_hit's answer with, for none, why: NoElement, OtherSide or SealedGap.
-struct HitElement {
-  int64_t element = -1;
-  RayFate fate = RayFate::TookLight;
-};
-HitElement element_standing_for(const Elements& elements, const Surface& surface, const RayTracer& tracer,
-                                const Hit& hit, uint8_t seen_from);
 
 // Where a ray from `origin` in `direction` lands: the element and patch it struck (UINT32_MAX for
 // none: it left the scene, or struck a back face, a buried texel or the far side of a thin gap's

@@ -88,7 +88,9 @@ nlohmann::ordered_json surfaces_json(const std::vector<SurfaceStatistics>& surfa
   for (const SurfaceStatistics& s : surfaces)
     out.push_back({{"name", s.name}, {"area_m2", s.area}, {"mean_lx", s.mean}, {"min_lx", s.min},
                    {"max_lx", s.max}, {"uniformity_min_over_mean", s.uniformity},
-                   {"open_view", std::isfinite(s.open_view) ? nlohmann::ordered_json(s.open_view) : nullptr}});
+                   {"open_view", std::isfinite(s.open_view) ? nlohmann::ordered_json(s.open_view) : nullptr},
+                   {"standard_error_lx",
+                    std::isfinite(s.standard_error) ? nlohmann::ordered_json(s.standard_error) : nullptr}});
   return out;
 }
 

@@ -38,6 +38,10 @@ OPENARENA_PK3S = ["pak4-textures.pk3", "pak6-patch088.pk3"]
 
 # The walls of a building: its outside is their box (tests check work-plane points lie inside it).
 WALLS = {"fzk_haus": "IfcWall"}
+# A building's exterior surfaces, by name (a regular expression): its outer walls, roof slabs and
+# site. The per-surface comparisons (bench/surfaces, tests/corpus/interior_surfaces.py) take the
+# rest as its interior.
+EXTERIOR = {"fzk_haus": "Wand-Ext|Dach|Gelände"}
 
 # Added lights. The sun: 60,000 lx (a clear day's direct normal illuminance in the CIE 171 range)
 # from 35 degrees up in the south-west, so it enters a building's windows. The lamp: a point light
@@ -235,6 +239,8 @@ def main():
                   if source.startswith("openarena:") else "assimp-testmodels: " + source)
         entry = {"name": name, "kind": kind, "file": os.path.relpath(path, folder),
                  "source": origin, "made": how, "light_added": said, "bounds_m": bounds}
+        if name in EXTERIOR:
+            entry["exterior_surfaces"] = EXTERIOR[name]
         if name in WALLS:
             lo, hi = world_bounds(read_gltf(path)[0], WALLS[name])
             entry["walls_bounds_m"] = {"min": lo, "max": hi}

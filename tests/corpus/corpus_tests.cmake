@@ -2,7 +2,8 @@
 # OpenArena packages by samples/corpus/make_corpus.py into build/corpus (fixture corpus.make),
 # each scene baked with the defaults and checked (tests/corpus/bake_scene.py: validator, atlas,
 # energy balance, clipping), then all seen in three.js, stock and with the plugin
-# (tests/corpus/three.test.mjs); the house's daylight run (tests/corpus/daylight_scene.py).
+# (tests/corpus/three.test.mjs); the house's daylight run (tests/corpus/daylight_scene.py) and its
+# surfaces against the path tracer (tests/corpus/interior_surfaces.py).
 # `ctest -L corpus`.
 set(RADBAKE_CORPUS_DIR ${CMAKE_BINARY_DIR}/corpus)
 set(RADBAKE_CORPUS_BAKES ${CMAKE_BINARY_DIR}/corpus_bakes)
@@ -23,3 +24,8 @@ add_test(NAME corpus.daylight.fzk_haus
   COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/corpus/daylight_scene.py $<TARGET_FILE:radbake>
           ${RADBAKE_CORPUS_DIR} fzk_haus ${RADBAKE_CORPUS_BAKES} 2)
 set_tests_properties(corpus.daylight.fzk_haus PROPERTIES FIXTURES_REQUIRED corpus_scenes LABELS corpus TIMEOUT ${timeout_600})
+# The house's rooms surface by surface against its stored path-traced reference (issue 57).
+add_test(NAME corpus.surfaces.fzk_haus
+  COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/corpus/interior_surfaces.py $<TARGET_FILE:radbake>
+          ${RADBAKE_CORPUS_DIR} ${RADBAKE_CORPUS_BAKES} ${CMAKE_CURRENT_SOURCE_DIR}/fixtures/fzk_haus_surfaces_reference.csv)
+set_tests_properties(corpus.surfaces.fzk_haus PROPERTIES FIXTURES_REQUIRED corpus_scenes LABELS corpus TIMEOUT ${timeout_600})

@@ -9,6 +9,8 @@
 
 #include "baker/pipeline/bake.h"
 #include "baker/surface/back_faces.h"
+#include "baker/surface/elements.h"
+#include "baker/surface/material_sampler.h"
 #include "baker/surface/surface.h"
 #include "io/gltf/gltf_loader.h"
 #include "io/gltf/gltf_writer.h"
@@ -126,6 +128,17 @@ MeshInstance bumpy_torus(int rings, int segments) {
       inst.triangles.insert(inst.triangles.end(),
                             {at(i, j), at(i, j + 1), at(i + 1, j + 1), at(i, j), at(i + 1, j + 1), at(i + 1, j)});
   return inst;
+}
+
+std::unique_ptr<PlacedElements> placed_elements(const Scene& scene, const AtlasOptions& options) {
+  auto placed = std::make_unique<PlacedElements>();
+  placed->surface = build_surface(scene, unwrap(scene, options));
+  placed->tracer = std::make_unique<RayTracer>(placed->surface);
+  MaterialSampler materials(scene, placed->surface);
+  Progress progress;
+  placed->elements = build_elements(placed->surface, materials, {}, progress);
+  place_samples(placed->elements, placed->surface, *placed->tracer, 1, progress);
+  return placed;
 }
 
 Baked bake_scene(Scene scene, const AtlasOptions& atlas_options, const BakeOptions& options) {

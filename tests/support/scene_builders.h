@@ -2,11 +2,14 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "baker/pipeline/bake_options.h"
 #include "baker/pipeline/bake_result.h"
+#include "baker/surface/ray_tracer.h"
+#include "baker/surface/surface.h"
 #include "base/scene.h"
 #include "uv/atlas.h"
 
@@ -43,6 +46,15 @@ Scene glowing_ceiling_room();
 Scene floor_with_lights_out_of_reach();
 
 Atlas unwrap(const Scene& scene, const AtlasOptions& options);
+
+// The stages a bake runs before any light: the surface of `scene` unwrapped with `options`, its
+// ray tracer, and its elements with their samples placed (seed 1).
+struct PlacedElements {
+  Surface surface;
+  std::unique_ptr<RayTracer> tracer;
+  Elements elements;
+};
+std::unique_ptr<PlacedElements> placed_elements(const Scene& scene, const AtlasOptions& options);
 
 // 8 texels a metre: rooms of a few metres bake in a blink, fine enough for readings in the air.
 AtlasOptions coarse_atlas();

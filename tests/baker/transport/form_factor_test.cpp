@@ -22,13 +22,11 @@ namespace {
 // F(A -> B) between square A (front facing `a_normal`) and the other square, by either method:
 // the area-weighted sum of the patch form factors from A's patches to B's.
 double form_factor(const Scene& scene, Vec3 a_normal, FormFactorMethod method, uint32_t amount, int block_size) {
-  Atlas atlas = test::unwrap(scene, {32.0f, 256, 2});
-  Surface surface = build_surface(scene, atlas);
-  RayTracer tracer(surface);
-  MaterialSampler materials(scene, surface);
+  const auto placed = test::placed_elements(scene, {32.0f, 256, 2});
+  const Surface& surface = placed->surface;
+  const RayTracer& tracer = *placed->tracer;
+  const Elements& e = placed->elements;
   Progress progress;
-  Elements e = build_elements(surface, materials, {}, progress);
-  place_samples(e, surface, tracer, 1, progress);
   PatchOptions blocks;
   blocks.block_size = block_size;
   Patches patches = build_patches(e, surface, blocks);

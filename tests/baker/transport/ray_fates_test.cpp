@@ -54,13 +54,11 @@ Scene perpendicular_squares_under_a_lamp() {
 TEST(RayFates, TwoSquaresSharingAnEdgeKeepTheShareOfHowellsFormFactor) {
   const Scene scene = perpendicular_squares_under_a_lamp();
   const AtlasOptions atlas_options{32.0f, 256, 2};
-  Atlas atlas = test::unwrap(scene, atlas_options);
-  Surface surface = build_surface(scene, atlas);
-  RayTracer tracer(surface);
-  MaterialSampler materials(scene, surface);
+  const auto placed = test::placed_elements(scene, atlas_options);
+  const Surface& surface = placed->surface;
+  const RayTracer& tracer = *placed->tracer;
+  const Elements& e = placed->elements;
   Progress progress;
-  Elements e = build_elements(surface, materials, {}, progress);
-  place_samples(e, surface, tracer, 1, progress);
   PatchOptions blocks;
   blocks.block_size = 4;
   const Patches patches = build_patches(e, surface, blocks);
