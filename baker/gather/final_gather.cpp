@@ -201,16 +201,8 @@ void apply_patch_changes(const Elements& e, const Patches& patches, const std::v
 }  // namespace
 
 GatherInputs gather_inputs(const Elements& e, const Patches& patches, const Surface& surface,
-                           std::vector<Rgb> patch_indirect, const std::vector<Rgb>& direct) {
-  std::vector<Rgb> reflected_direct(patches.size());
-  for (size_t p = 0; p < patches.size(); ++p) {
-    for (uint32_t k = patches.first_member[p]; k < patches.first_member[p + 1]; ++k) {
-      const uint32_t i = patches.members[k];
-      reflected_direct[p] += e.reflectance[i] * direct[i] * e.area[i];
-    }
-    if (patches.area[p] > 0) reflected_direct[p] = reflected_direct[p] / patches.area[p];
-  }
-  return {std::move(patch_indirect), near_reach(e, patches, surface), std::move(reflected_direct)};
+                           std::vector<Rgb> patch_indirect) {
+  return {std::move(patch_indirect), near_reach(e, patches, surface)};
 }
 
 GatherTrace trace_gather(const Elements& e, const Patches& patches, const Surface& surface, const RayTracer& tracer,
@@ -257,17 +249,8 @@ GatherTrace trace_gather(const Elements& e, const Patches& patches, const Surfac
           if (directions)
             from.add(e.reflectance[at.element] * (direct[at.element] + inputs.patch_indirect[at.patch]), dir);
         } else {
-          // The struck texel's own reflected direct light in place of its patch's mean: a sun
-          // patch or a shadow's edge inside the patch is where the rays find it (on the FZK-Haus's
-          // sunlit window frames the patch mean spread it over the frame's patch: the inner walls
-          // read 0.3 to 1.7 points darker). Rays from beyond the near field strike a patch's
-          // texels by their area, so over the patch this averages to its mean: the solve's light
-          // is neither made nor lost.
-          const Rgb own = patch_exitance[at.patch] - inputs.reflected_direct[at.patch] +
-                          e.reflectance[at.element] * direct[at.element];
-          const Rgb value{std::max(own.x, 0.0f), std::max(own.y, 0.0f), std::max(own.z, 0.0f)};
-          sum += value;
-          if (directions) from.add(value, dir);
+          sum += patch_exitance[at.patch];
+          if (directions) from.add(patch_exitance[at.patch], dir);
         }
       }
       // Until the near texels' own light is solved, their patches' stands in for it.

@@ -6,8 +6,6 @@
 // own gathered indirect light (solved together with its neighbours'), instead of the patch mean;
 // what the near field takes beyond the mean, the patch's far receivers get less of, in proportion
 // to their far share of it (form factors less the near field's share), so no light is made or lost.
-// A ray beyond the near field takes the patch mean with the struck texel's own reflected direct
-// light in place of the patch's mean one.
 #pragma once
 
 #include <cstdint>
@@ -58,16 +56,13 @@ struct GatherTrace {
 };
 
 // What every range needs besides the elements: per patch, the irradiance it gathers in the solve
-// (gathered_irradiance of the solved exitance), how far its near field reaches, and the
-// area-weighted mean of its texels' reflected direct light (rho D, lm/m2), for which a far ray
-// takes its struck texel's own. `direct`: per element, lux.
+// (gathered_irradiance of the solved exitance) and how far its near field reaches.
 struct GatherInputs {
   std::vector<Rgb> patch_indirect;
   std::vector<float> near_reach;
-  std::vector<Rgb> reflected_direct;
 };
 GatherInputs gather_inputs(const Elements& elements, const Patches& patches, const Surface& surface,
-                           std::vector<Rgb> patch_indirect, const std::vector<Rgb>& direct);
+                           std::vector<Rgb> patch_indirect);
 
 // `patch_exitance`: the solve's reflected exitance per patch; `direct`: irradiance per element
 // from lights and emitters, lux; `near_field` false: every ray takes the patch mean.

@@ -214,7 +214,7 @@ std::optional<GatheredLight> shared_gather(const Elements& elements, const Patch
   if (team.first()) indirect.put_vector(gathered_irradiance(patches, transport, patch_exitance));
   team.broadcast_from_first("final gather", indirect.bytes());
   const GatherInputs inputs =
-      gather_inputs(elements, patches, surface, ByteReader(indirect.bytes()).get_vector<Rgb>(), direct);
+      gather_inputs(elements, patches, surface, ByteReader(indirect.bytes()).get_vector<Rgb>());
   const size_t n = elements.size();
   const bool directional = options.directional != Directional::None;
   const std::vector<size_t> starts = texel_chunk_starts(elements, true);
