@@ -245,6 +245,15 @@ std::pair<const Elements::Piece*, const Elements::Piece*> pieces_of(const Elemen
   return {first, last};
 }
 
+// Element i's sample at `position` on triangle t, with the shading normal there (the geometric one
+// where the shading normal turns away from it).
+void sample_at(Elements& e, const Surface& surface, size_t i, uint32_t t, Vec3 position) {
+  e.triangle[i] = t;
+  e.position[i] = position;
+  e.normal[i] = surface.shading_normal(t, barycentric(&surface.corners[3 * t], position));
+  if (!(dot(e.normal[i], surface.normal[t]) > 0)) e.normal[i] = surface.normal[t];
+}
+
 // A texel whose sample lies buried may still hold surface in the open: another of its pieces (a
 // window frame's face pressed against its reveal, its profile hinged onto it) or the rest of its
 // own triangle (a slab's texel half under a wall). Left buried, every ray striking the open part
@@ -257,10 +266,7 @@ uint8_t move_buried_sample(Elements& e, const Surface& surface, const RayTracer&
   const uint8_t kept_flags = buried.flags & (kFiltered | kFlatTexel);
   const float area = e.area[i];
   auto settled_at = [&](uint32_t t, Vec3 position, bool on_own_triangle) {
-    e.triangle[i] = t;
-    e.position[i] = position;
-    e.normal[i] = surface.shading_normal(t, barycentric(&surface.corners[3 * t], position));
-    if (!(dot(e.normal[i], surface.normal[t]) > 0)) e.normal[i] = surface.normal[t];
+    sample_at(e, surface, i, t, position);
     e.offset[i] = ray_offset(position, surface.texel_size(t));
     // On its own triangle the texel straddles what buried its centre: near geometry, whatever the
     // tangent probes from a quarter point find, so only the cells the new sample sees are its
@@ -286,11 +292,8 @@ uint8_t move_buried_sample(Elements& e, const Surface& surface, const RayTracer&
     }
     const uint32_t settled = e.triangle[i];
     const Vec3 lift = surface.normal[settled] * e.offset[i], centre = count > 0 ? sum / float(count) : e.position[i];
-    if (count > 0 && sees_within_texel(surface, tracer, e.position[i] + lift, settled, centre + lift, settled)) {
-      e.position[i] = centre;
-      e.normal[i] = surface.shading_normal(settled, barycentric(&surface.corners[3 * settled], centre));
-      if (!(dot(e.normal[i], surface.normal[settled]) > 0)) e.normal[i] = surface.normal[settled];
-    }
+    if (count > 0 && sees_within_texel(surface, tracer, e.position[i] + lift, settled, centre + lift, settled))
+      sample_at(e, surface, i, settled, centre);
     return std::optional<uint8_t>(cover);
   };
   const auto [first, last] = pieces_of(e, i);
