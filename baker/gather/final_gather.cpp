@@ -37,6 +37,7 @@ std::vector<float> near_reach(const Elements& e, const Patches& patches, const S
 struct NearExchange {
   double share = 0;
   double excess[3] = {};
+  double direct_beyond[3] = {};
 };
 using NearTally = std::map<std::pair<uint32_t, uint32_t>, NearExchange>;  // by (p, q)
 
@@ -156,20 +157,38 @@ void solve_near_indirect(const Elements& e, const Patches& patches, const std::v
   }
 }
 
-// What the near field took beyond each struck patch's mean, by (receiving patch, struck patch).
-NearTally tally_near_field(const Elements& e, const Patches& patches, const std::vector<Rgb>& patch_exitance,
-                           const std::vector<Rgb>& direct, const std::vector<Rgb>& irradiance,
-                           const std::vector<NearLanding>& landings, uint32_t rays) {
+// What a ray landing beyond the near field takes from element `struck` of patch `q`: the texel's
+// own reflected direct light and its patch's reflected indirect light (the patch's exitance less its
+// texels' mean reflected direct light). Where the sun lights part of a patch, the receivers that
+// see that part best take its light, and no more of it than its texels send their way: a far ray
+// strikes each texel by what the receiver sees of it, as the path tracer's would.
+Rgb far_exitance(const Elements& e, const GatherInputs& inputs, const std::vector<Rgb>& patch_exitance,
+                 const std::vector<Rgb>& direct, uint32_t struck, uint32_t q) {
+  const Rgb own = patch_exitance[q] - inputs.reflected_direct[q] + e.reflectance[struck] * direct[struck];
+  return {std::max(own.x, 0.0f), std::max(own.y, 0.0f), std::max(own.z, 0.0f)};
+}
+
+// What the near field took beyond what far rays take from the same texels (their own indirect light
+// in place of their patch's), by (receiving patch, struck patch).
+NearTally tally_near_field(const Elements& e, const Patches& patches, const GatherInputs& inputs,
+                           const std::vector<Rgb>& patch_exitance, const std::vector<Rgb>& direct,
+                           const std::vector<Rgb>& irradiance, const std::vector<NearLanding>& landings,
+                           uint32_t rays) {
   NearTally near;
   for (const NearLanding& l : landings) {
     const uint32_t q = patches.patch_of_element[l.struck];
-    const Rgb beyond = e.reflectance[l.struck] * (direct[l.struck] + irradiance[l.struck]) - patch_exitance[q];
+    const Rgb beyond = e.reflectance[l.struck] * (direct[l.struck] + irradiance[l.struck]) -
+                       far_exitance(e, inputs, patch_exitance, direct, l.struck, q);
     const double share = double(e.area[l.receiver]) * l.count / rays;
     NearExchange& exchange = near[{patches.patch_of_element[l.receiver], q}];
     exchange.share += share;
     exchange.excess[0] += share * beyond.x;
     exchange.excess[1] += share * beyond.y;
     exchange.excess[2] += share * beyond.z;
+    const Rgb direct_beyond = e.reflectance[l.struck] * direct[l.struck] - inputs.reflected_direct[q];
+    exchange.direct_beyond[0] += share * direct_beyond.x;
+    exchange.direct_beyond[1] += share * direct_beyond.y;
+    exchange.direct_beyond[2] += share * direct_beyond.z;
   }
   return near;
 }
@@ -201,8 +220,16 @@ void apply_patch_changes(const Elements& e, const Patches& patches, const std::v
 }  // namespace
 
 GatherInputs gather_inputs(const Elements& e, const Patches& patches, const Surface& surface,
-                           std::vector<Rgb> patch_indirect) {
-  return {std::move(patch_indirect), near_reach(e, patches, surface)};
+                           std::vector<Rgb> patch_indirect, const std::vector<Rgb>& direct) {
+  std::vector<Rgb> reflected_direct(patches.size());
+  for (size_t p = 0; p < patches.size(); ++p) {
+    for (uint32_t k = patches.first_member[p]; k < patches.first_member[p + 1]; ++k) {
+      const uint32_t i = patches.members[k];
+      reflected_direct[p] += e.reflectance[i] * direct[i] * e.area[i];
+    }
+    if (patches.area[p] > 0) reflected_direct[p] = reflected_direct[p] / patches.area[p];
+  }
+  return {std::move(patch_indirect), near_reach(e, patches, surface), std::move(reflected_direct)};
 }
 
 GatherTrace trace_gather(const Elements& e, const Patches& patches, const Surface& surface, const RayTracer& tracer,
@@ -214,6 +241,8 @@ GatherTrace trace_gather(const Elements& e, const Patches& patches, const Surfac
   out.irradiance.resize(range.size());
   out.harmonic_distance.assign(range.size(), INFINITY);
   out.open_view.assign(range.size(), 0.0f);
+  out.lost_share.assign(range.size(), 0.0f);
+  out.far_beyond_mean.assign(range.size(), Rgb{});
   if (directions) out.mean_direction.resize(range.size());
   // Fixed blocks of elements, each with its own list of near landings, joined in block order: the
   // same list whatever the threads.
@@ -228,10 +257,10 @@ GatherTrace trace_gather(const Elements& e, const Patches& patches, const Surfac
       const Vec3 ng = surface.normal[e.triangle[i]];
       Rng rng(seed, Stream::Gather, i);
       const uint32_t origin_pattern = rng.next_u32(), direction_pattern = rng.next_u32();
-      Rgb sum{};
+      Rgb sum{}, beyond_mean{};
       LightDirection from{};
       double nearness = 0;  // sum of 1 / distance
-      uint32_t escaped = 0;
+      uint32_t escaped = 0, lost = 0;
       struck.clear();
       for (uint32_t k = 0; k < rays; ++k) {
         // Origins spread over the texel, as the form factor rays do: an element stands for its
@@ -241,6 +270,7 @@ GatherTrace trace_gather(const Elements& e, const Patches& patches, const Surfac
         const Landing at = land(e, patches, surface, tracer, origin, dir, e.flags[i]);
         fates[block].add(at.fate);
         escaped += at.escaped;
+        lost += at.fate != RayFate::TookLight && at.fate != RayFate::Escaped;
         if (!at.escaped) nearness += 1.0 / std::max(at.distance, 1e-6f);
         if (at.patch == UINT32_MAX) continue;
         if (near_field && at.distance < inputs.near_reach[at.patch]) {
@@ -249,8 +279,10 @@ GatherTrace trace_gather(const Elements& e, const Patches& patches, const Surfac
           if (directions)
             from.add(e.reflectance[at.element] * (direct[at.element] + inputs.patch_indirect[at.patch]), dir);
         } else {
-          sum += patch_exitance[at.patch];
-          if (directions) from.add(patch_exitance[at.patch], dir);
+          const Rgb value = far_exitance(e, inputs, patch_exitance, direct, at.element, at.patch);
+          sum += value;
+          beyond_mean += value - patch_exitance[at.patch];
+          if (directions) from.add(value, dir);
         }
       }
       // Until the near texels' own light is solved, their patches' stands in for it.
@@ -269,6 +301,8 @@ GatherTrace trace_gather(const Elements& e, const Patches& patches, const Surfac
       }
       if (nearness > 0) out.harmonic_distance[i - range.begin] = float(double(rays) / nearness);
       out.open_view[i - range.begin] = float(escaped) / float(rays);
+      out.lost_share[i - range.begin] = float(lost) / float(rays);
+      out.far_beyond_mean[i - range.begin] = beyond_mean / float(rays);
     }
   });
   for (const auto& block : landings) out.landings.insert(out.landings.end(), block.begin(), block.end());
@@ -284,15 +318,23 @@ GatheredLight finish_gather(const Elements& e, const Patches& patches, const Pat
   out.irradiance = std::move(whole.irradiance);
   out.harmonic_distance = std::move(whole.harmonic_distance);
   out.open_view = std::move(whole.open_view);
+  out.lost_share = std::move(whole.lost_share);
   out.mean_direction = std::move(whole.mean_direction);
   if (rays > 0 && near_field) solve_near_indirect(e, patches, inputs.patch_indirect, whole.landings, rays, out.irradiance);
-  const NearTally near = tally_near_field(e, patches, patch_exitance, direct, out.irradiance, whole.landings, rays);
+  const NearTally near = tally_near_field(e, patches, inputs, patch_exitance, direct, out.irradiance, whole.landings, rays);
   std::vector<Rgb> correction = far_field_correction(patches, transport, near);
   std::vector<Rgb> received = correction;  // per patch: the mean change of its texels' irradiance
   for (const auto& [pq, x] : near) {
     const float to_mean = float(1.0 / patches.area[pq.first]);
     received[pq.first] += Rgb{float(x.excess[0]), float(x.excess[1]), float(x.excess[2])} * to_mean;
+    received[pq.first] += Rgb{float(x.direct_beyond[0]), float(x.direct_beyond[1]), float(x.direct_beyond[2])} * to_mean;
   }
+  // Far rays took their struck texels' own direct light, which over each struck texel sums to what
+  // it sends (nothing to balance), but which changes what their patches receive from the solve's.
+  for (size_t i = 0; i < e.size(); ++i)
+    if (e.valid(i) && patches.patch_of_element[i] != UINT32_MAX)
+      received[patches.patch_of_element[i]] +=
+          whole.far_beyond_mean[i] * float(e.area[i] / patches.area[patches.patch_of_element[i]]);
   const std::vector<Rgb> bounces = near_field_bounces(patches, transport, received);
   for (size_t p = 0; p < patches.size(); ++p) correction[p] += bounces[p];
   apply_patch_changes(e, patches, correction, out.irradiance);

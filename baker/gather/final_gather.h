@@ -3,9 +3,12 @@
 // already counts it), so the rays only carry light that surfaces reflect. A ray landing within
 // three widths of the struck patch (the near field: a block's foot, a corner, a lamp close to a
 // ceiling) takes the struck texel's own exitance, its reflectance times its direct light plus its
-// own gathered indirect light (solved together with its neighbours'), instead of the patch mean;
-// what the near field takes beyond the mean, the patch's far receivers get less of, in proportion
-// to their far share of it (form factors less the near field's share), so no light is made or lost.
+// own gathered indirect light (solved together with its neighbours'). A ray landing farther takes
+// the struck texel's reflected direct light plus its patch's reflected indirect light, so a patch
+// the sun lights in part gives its light to those that see that part. What the near field takes
+// beyond that (its texels' own indirect light against their patch's), the patch's far receivers get
+// less of, in proportion to their far share of it (form factors less the near field's share), so no
+// light is made or lost.
 #pragma once
 
 #include <cstdint>
@@ -37,6 +40,9 @@ struct GatheredLight {
   // Per element: the share of its gather rays that left the scene (cosine-weighted, so the view of
   // the open it has: about 1 on a roof, under 0.1 in a room with windows), 0 for none cast.
   std::vector<float> open_view;
+  // Per element: the share of its gather rays that struck a back face or a front face that took no
+  // light (lost to the scene, as the form factors' `lost`), 0 for none cast.
+  std::vector<float> lost_share;
 };
 
 // Gather rays from a receiver that landed near, on one struck element (the near field).
@@ -50,22 +56,30 @@ struct GatherTrace {
   std::vector<Rgb> irradiance;          // per element of the range, lux, before the near field is solved
   std::vector<float> harmonic_distance; // per element of the range, metres
   std::vector<float> open_view;         // per element of the range, as GatheredLight's
+  std::vector<float> lost_share;        // per element of the range, as GatheredLight's
+  // Per element of the range, lux: what its far rays took beyond their struck patches' mean
+  // exitance, a change of what its patch receives that the solve did not know.
+  std::vector<Rgb> far_beyond_mean;
   std::vector<LightDirection> mean_direction;  // per element of the range, as GatheredLight's; empty unless asked
   std::vector<NearLanding> landings;    // by receiver, then struck element
   RayFates fates;                       // where its rays ended
 };
 
 // What every range needs besides the elements: per patch, the irradiance it gathers in the solve
-// (gathered_irradiance of the solved exitance) and how far its near field reaches.
+// (gathered_irradiance of the solved exitance), how far its near field reaches, and its texels'
+// area-weighted mean reflected direct light (lm/m2), which a far ray's struck texel's own replaces.
+// `direct`: per element, lux.
 struct GatherInputs {
   std::vector<Rgb> patch_indirect;
   std::vector<float> near_reach;
+  std::vector<Rgb> reflected_direct;
 };
 GatherInputs gather_inputs(const Elements& elements, const Patches& patches, const Surface& surface,
-                           std::vector<Rgb> patch_indirect);
+                           std::vector<Rgb> patch_indirect, const std::vector<Rgb>& direct);
 
 // `patch_exitance`: the solve's reflected exitance per patch; `direct`: irradiance per element
-// from lights and emitters, lux; `near_field` false: every ray takes the patch mean.
+// from lights and emitters, lux; `near_field` false: every ray lands far (its struck texel's
+// reflected direct light and its patch's reflected indirect light).
 GatherTrace trace_gather(const Elements& elements, const Patches& patches, const Surface& surface,
                          const RayTracer& tracer, const GatherInputs& inputs, const std::vector<Rgb>& patch_exitance,
                          const std::vector<Rgb>& direct, uint32_t rays, bool near_field, uint64_t seed,

@@ -214,7 +214,7 @@ std::optional<GatheredLight> shared_gather(const Elements& elements, const Patch
   if (team.first()) indirect.put_vector(gathered_irradiance(patches, transport, patch_exitance));
   team.broadcast_from_first("final gather", indirect.bytes());
   const GatherInputs inputs =
-      gather_inputs(elements, patches, surface, ByteReader(indirect.bytes()).get_vector<Rgb>());
+      gather_inputs(elements, patches, surface, ByteReader(indirect.bytes()).get_vector<Rgb>(), direct);
   const size_t n = elements.size();
   const bool directional = options.directional != Directional::None;
   const std::vector<size_t> starts = texel_chunk_starts(elements, true);
@@ -225,6 +225,8 @@ std::optional<GatheredLight> shared_gather(const Elements& elements, const Patch
     whole.irradiance.resize(n);
     whole.harmonic_distance.assign(n, INFINITY);
     whole.open_view.assign(n, 0.0f);
+    whole.lost_share.assign(n, 0.0f);
+    whole.far_beyond_mean.assign(n, Rgb{});
     if (directional) whole.mean_direction.resize(n);
   }
   SharedStage stage;
@@ -238,6 +240,8 @@ std::optional<GatheredLight> shared_gather(const Elements& elements, const Patch
     out.put_vector(t.irradiance);
     out.put_vector(t.harmonic_distance);
     out.put_vector(t.open_view);
+    out.put_vector(t.lost_share);
+    out.put_vector(t.far_beyond_mean);
     out.put_vector(t.mean_direction);
     out.put_vector(t.landings);
     out.put(t.fates);
@@ -248,10 +252,13 @@ std::optional<GatheredLight> shared_gather(const Elements& elements, const Patch
     const std::vector<Rgb> irradiance = in.get_vector<Rgb>();
     const std::vector<float> distance = in.get_vector<float>();
     const std::vector<float> open_view = in.get_vector<float>();
+    const std::vector<float> lost_share = in.get_vector<float>();
+    const std::vector<Rgb> far_beyond_mean = in.get_vector<Rgb>();
     const std::vector<LightDirection> mean_direction = in.get_vector<LightDirection>();
     landings[chunk] = in.get_vector<NearLanding>();
     const size_t count = starts[chunk + 1] - starts[chunk];
     if (irradiance.size() != count || distance.size() != count || open_view.size() != count ||
+        lost_share.size() != count || far_beyond_mean.size() != count ||
         mean_direction.size() != (directional ? count : 0))
       throw TruncatedBytes();
     if (!mean_direction.empty())
@@ -261,6 +268,8 @@ std::optional<GatheredLight> shared_gather(const Elements& elements, const Patch
     std::copy(irradiance.begin(), irradiance.end(), whole.irradiance.begin() + std::ptrdiff_t(starts[chunk]));
     std::copy(distance.begin(), distance.end(), whole.harmonic_distance.begin() + std::ptrdiff_t(starts[chunk]));
     std::copy(open_view.begin(), open_view.end(), whole.open_view.begin() + std::ptrdiff_t(starts[chunk]));
+    std::copy(lost_share.begin(), lost_share.end(), whole.lost_share.begin() + std::ptrdiff_t(starts[chunk]));
+    std::copy(far_beyond_mean.begin(), far_beyond_mean.end(), whole.far_beyond_mean.begin() + std::ptrdiff_t(starts[chunk]));
     whole.fates += in.get<RayFates>();
   };
   if (sharing.merge_slices > 0) {
@@ -350,7 +359,8 @@ void interreflect(const Elements& elements, const Surface& surface, const RayTra
   if (options.directional != Directional::None)
     result.light_directions = total_light_directions(result.light_directions, gathered->mean_direction, result.irradiance);
   for (size_t i = 0; i < elements.size(); ++i) result.irradiance[i] += result.direct[i];
-  report.balance = energy_balance(elements, patches, light_between.transport, delivered_power, result.irradiance);
+  const TexelFates fates = options.gather_rays > 0 ? TexelFates{result.open_view, gathered->lost_share} : TexelFates{};
+  report.balance = energy_balance(elements, patches, light_between.transport, delivered_power, result.irradiance, fates);
 
   report.patches = patches.size();
   report.patch_block_size = patches.block_size;

@@ -6,7 +6,7 @@ double mean(Rgb v) { return (double(v.x) + v.y + v.z) / 3.0; }
 }  // namespace
 
 EnergyBalance energy_balance(const Elements& e, const Patches& patches, const PatchTransport& transport,
-                             double delivered_power, const std::vector<Rgb>& irradiance) {
+                             double delivered_power, const std::vector<Rgb>& irradiance, const TexelFates& fates) {
   EnergyBalance b;
   b.measured = true;
   b.emitted = delivered_power;
@@ -21,8 +21,15 @@ EnergyBalance energy_balance(const Elements& e, const Patches& patches, const Pa
     const float stops = e.opacity.empty() ? 1.0f : e.opacity[i];
     Rgb absorbed = (Rgb{stops, stops, stops} - e.reflectance[i]) * irradiance[i];
     b.absorbed += mean(absorbed) * e.area[i];
-    if (patches.patch_of_element[i] != UINT32_MAX)
-      leaving[patches.patch_of_element[i]] += mean(e.emission[i] + e.reflectance[i] * irradiance[i]) * e.area[i];
+    const uint32_t q = patches.patch_of_element[i];
+    if (q == UINT32_MAX) continue;
+    const double sends = mean(e.emission[i] + e.reflectance[i] * irradiance[i]) * e.area[i];
+    if (fates.escaped.empty()) {
+      leaving[q] += sends;
+    } else {
+      b.escaped += sends * fates.escaped[i];
+      b.lost += sends * fates.lost[i];
+    }
   }
   for (size_t q = 0; q < patches.size(); ++q) {
     b.escaped += leaving[q] * transport.escaped[q];

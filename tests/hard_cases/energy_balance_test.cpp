@@ -1,8 +1,8 @@
 // Light is conserved: what emitters and lamps put into the scene (BakeReport::balance.emitted)
 // is absorbed by surfaces, escapes to the sky or strikes a back face (lost), to 0.5%. The terms
-// come from independent estimates (texel-level irradiance against patch-level ray counts), so the
-// balance catches light created or destroyed anywhere: a leak, a double count, texel quadrature
-// that over-counts a sharp edge, a large sum kept in float.
+// come from independent estimates (texel-level irradiance against each texel's gather rays' fates),
+// so the balance catches light created or destroyed anywhere: a leak, a double count, texel
+// quadrature that over-counts a sharp edge, a large sum kept in float.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -139,6 +139,7 @@ void expect_radiosity_to_agree_with_the_path_tracer_in_a_roof_lit_room(float gla
   }
   // And every lumen the sky brings in is absorbed or leaves again (0.5%: the solve's tolerance and
   // the rays' sampling of what escapes).
+  testing::Test::RecordProperty("balance_relative_error", std::to_string(baked.report.balance.relative_error));
   EXPECT_NEAR(baked.report.balance.relative_error, 0, 0.005);
 }
 
