@@ -15,8 +15,8 @@ The interior read -1.43% and -0.83% while far gather rays took their struck patc
 which gave the rooms light that sunlit window frames send into the open; since they take the
 struck texel's own direct light (light conserved texel by texel) the interior reads -1.58% and
 -2.47%, the upper slab -5.6% at production, and at the defaults single walls -29% and +4%: light
-still missing, not yet found (docs/accuracy.md). The bounds held here are those figures with room
-for another seed: 2% and 3%. Where the rays
+still missing, not yet found (docs/accuracy.md). The bounds held here are those figures rounded
+up: 2% and 3%. Where the rays
 ended is checked too (report.json's counts): the front faces struck that took no light, other than
 through a sealed thin gap, are at most a bound (PRESETS) of the gather's and of the form factors'
 rays.
