@@ -32,12 +32,22 @@ std::vector<float> near_reach(const Elements& e, const Patches& patches, const S
   return reach;
 }
 
-// What the near field took from one patch q into the texels of patch p: lm of texel exitance
-// beyond q's mean (excess) and the share of p's hemisphere it came through, A_p-weighted (m^2).
+// Lumens per channel, summed in double: many small shares of a patch's light.
+struct Lumens {
+  double c[3] = {};
+  void add(double share, Rgb v) {
+    c[0] += share * v.x;
+    c[1] += share * v.y;
+    c[2] += share * v.z;
+  }
+  Rgb rgb() const { return {float(c[0]), float(c[1]), float(c[2])}; }
+};
+// What the near field took from one patch q into the texels of patch p, lm, and the share of p's
+// hemisphere it came through, A_p-weighted (m^2).
 struct NearExchange {
   double share = 0;
-  double excess[3] = {};
-  double direct_beyond[3] = {};
+  Lumens excess;         // beyond what far rays take from the same texels: balanced over far receivers
+  Lumens direct_beyond;  // the struck texels' reflected direct light beyond their patch's mean
 };
 using NearTally = std::map<std::pair<uint32_t, uint32_t>, NearExchange>;  // by (p, q)
 
@@ -49,7 +59,7 @@ std::vector<Rgb> far_field_correction(const Patches& patches, const PatchTranspo
   const size_t n = patches.size();
   std::vector<std::array<double, 3>> excess(n, {0, 0, 0});
   for (const auto& [pq, x] : near)
-    for (int c = 0; c < 3; ++c) excess[pq.second][size_t(c)] += x.excess[c];
+    for (int c = 0; c < 3; ++c) excess[pq.second][size_t(c)] += x.excess.c[c];
   auto far_share = [&](size_t p, uint64_t k) {
     auto it = near.find({uint32_t(p), transport.target[k]});
     const double near_share = it == near.end() ? 0.0 : it->second.share / patches.area[p];
@@ -182,13 +192,8 @@ NearTally tally_near_field(const Elements& e, const Patches& patches, const Gath
     const double share = double(e.area[l.receiver]) * l.count / rays;
     NearExchange& exchange = near[{patches.patch_of_element[l.receiver], q}];
     exchange.share += share;
-    exchange.excess[0] += share * beyond.x;
-    exchange.excess[1] += share * beyond.y;
-    exchange.excess[2] += share * beyond.z;
-    const Rgb direct_beyond = e.reflectance[l.struck] * direct[l.struck] - inputs.reflected_direct[q];
-    exchange.direct_beyond[0] += share * direct_beyond.x;
-    exchange.direct_beyond[1] += share * direct_beyond.y;
-    exchange.direct_beyond[2] += share * direct_beyond.z;
+    exchange.excess.add(share, beyond);
+    exchange.direct_beyond.add(share, e.reflectance[l.struck] * direct[l.struck] - inputs.reflected_direct[q]);
   }
   return near;
 }
@@ -326,8 +331,8 @@ GatheredLight finish_gather(const Elements& e, const Patches& patches, const Pat
   std::vector<Rgb> received = correction;  // per patch: the mean change of its texels' irradiance
   for (const auto& [pq, x] : near) {
     const float to_mean = float(1.0 / patches.area[pq.first]);
-    received[pq.first] += Rgb{float(x.excess[0]), float(x.excess[1]), float(x.excess[2])} * to_mean;
-    received[pq.first] += Rgb{float(x.direct_beyond[0]), float(x.direct_beyond[1]), float(x.direct_beyond[2])} * to_mean;
+    received[pq.first] += x.excess.rgb() * to_mean;
+    received[pq.first] += x.direct_beyond.rgb() * to_mean;
   }
   // Far rays took their struck texels' own direct light, which over each struck texel sums to what
   // it sends (nothing to balance), but which changes what their patches receive from the solve's.
