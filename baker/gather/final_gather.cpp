@@ -51,26 +51,45 @@ struct NearExchange {
 };
 using NearTally = std::map<std::pair<uint32_t, uint32_t>, NearExchange>;  // by (p, q)
 
+// Per entry k of row p of the form factors, the share of p's hemisphere through which its far rays
+// reach the entry's target: F_pq less what the near field carried.
+std::vector<float> far_form_factors(const Patches& patches, const PatchTransport& transport, const NearTally& near) {
+  std::vector<float> far(transport.form_factor.size());
+  tbb::parallel_for(size_t(0), patches.size(), [&](size_t p) {
+    std::vector<std::pair<uint32_t, double>> near_shares;  // (q, share of p's hemisphere), by q
+    for (auto it = near.lower_bound({uint32_t(p), 0}); it != near.end() && it->first.first == p; ++it)
+      near_shares.emplace_back(it->first.second, it->second.share / patches.area[p]);
+    for (uint64_t k = transport.row_start[p]; k < transport.row_start[p + 1]; ++k) {
+      auto it = std::lower_bound(near_shares.begin(), near_shares.end(), std::make_pair(transport.target[k], 0.0));
+      const double near_share = it != near_shares.end() && it->first == transport.target[k] ? it->second : 0.0;
+      far[k] = float(std::max(0.0, double(transport.form_factor[k]) - near_share));
+    }
+  });
+  return far;
+}
+
 // The near field moves light, it must not make any: what receivers near a patch took beyond its
-// mean is what its far receivers get less of. Their share of the patch's light, F_pq less what
-// the near field carried, is known from the form factors; each far receiving patch p gives up
-// sum over q of f_pq c_q, with c_q chosen so that q's far receivers give up its excess exactly.
-std::vector<Rgb> far_field_correction(const Patches& patches, const PatchTransport& transport, const NearTally& near) {
+// texels' mean is what its far receivers get less of. (Where that mean itself differs from the
+// patch's, `level_change`, q's texels send that much more or less to everyone: that reaches far
+// receivers as a bounce, near_field_bounces, and is not balanced here.) Their share of the patch's
+// light, F_pq less what the near field carried, is known from the form factors; each far receiving
+// patch p gives up sum over q of f_pq c_q, with c_q chosen so that q's far receivers give up its
+// excess exactly.
+std::vector<Rgb> far_field_correction(const Patches& patches, const PatchTransport& transport, const NearTally& near,
+                                      const std::vector<float>& far_share, const std::vector<Rgb>& level_change) {
   const size_t n = patches.size();
   std::vector<std::array<double, 3>> excess(n, {0, 0, 0});
-  for (const auto& [pq, x] : near)
-    for (int c = 0; c < 3; ++c) excess[pq.second][size_t(c)] += x.excess.c[c];
-  auto far_share = [&](size_t p, uint64_t k) {
-    auto it = near.find({uint32_t(p), transport.target[k]});
-    const double near_share = it == near.end() ? 0.0 : it->second.share / patches.area[p];
-    return std::max(0.0, double(transport.form_factor[k]) - near_share);
-  };
+  for (const auto& [pq, x] : near) {
+    Lumens beyond_level = x.excess;
+    beyond_level.add(-x.share, level_change[pq.second]);
+    for (int c = 0; c < 3; ++c) excess[pq.second][size_t(c)] += beyond_level.c[c];
+  }
   // sum over p of A_p f_pq, and of A_p F_pq: a patch that only near receivers see (every F_pq
   // taken up by the near field) has its excess shared by all its receivers instead.
   std::vector<double> far_area(n, 0), seen_area(n, 0);
   for (size_t p = 0; p < n; ++p)
     for (uint64_t k = transport.row_start[p]; k < transport.row_start[p + 1]; ++k) {
-      far_area[transport.target[k]] += patches.area[p] * far_share(p, k);
+      far_area[transport.target[k]] += patches.area[p] * far_share[k];
       seen_area[transport.target[k]] += double(patches.area[p]) * transport.form_factor[k];
     }
   std::vector<uint8_t> only_near(n);
@@ -81,7 +100,7 @@ std::vector<Rgb> far_field_correction(const Patches& patches, const PatchTranspo
     for (uint64_t k = transport.row_start[p]; k < transport.row_start[p + 1]; ++k) {
       const uint32_t q = transport.target[k];
       if (!(seen_area[q] > 0)) continue;
-      const double f = only_near[q] ? transport.form_factor[k] / seen_area[q] : far_share(p, k) / far_area[q];
+      const double f = only_near[q] ? transport.form_factor[k] / seen_area[q] : far_share[k] / far_area[q];
       for (int c = 0; c < 3; ++c) sum[c] += f * excess[q][size_t(c)];
     }
     correction[p] = Rgb{float(-sum[0]), float(-sum[1]), float(-sum[2])};
@@ -89,26 +108,41 @@ std::vector<Rgb> far_field_correction(const Patches& patches, const PatchTranspo
   return correction;
 }
 
-// The near field changes what patches receive (the far correction included: per patch p, its
-// texels' mean change), and so what they reflect, which the solve did not know. The change is
-// solved as radiosity of its own over the same form factors, dB_p = rho_p (dE_p + sum_q F_pq dB_q)
-// (Gauss-Seidel; it converges as the solve did, rho F < 1), and what it sends is gathered back
-// per patch: without it the extra light a lamp's near texels take from the ceiling over it would
-// still be reflected into the room as well.
+// The near field changes what patches receive, and so what they reflect, which the solve did not
+// know. Two kinds of change: `in_texels`, per patch p the mean change its texels' gathered light
+// already holds (struck texels' own light in place of their patches'), and `applied`, what is still
+// to be added to them (the far correction). Near rays took the struck texels' own light, so the
+// in_texels change of a patch reaches others first through their far rays only; counted through
+// the whole form factor it came twice, and in a room that the near field covers nearly whole
+// (the defaults' 6-texel patches on the FZK-Haus) an inner wall lost 24% of its light to it.
+// Every change beyond that first reflection reaches near and far rays alike: the bounce solved
+// is dR_p = rho_p (applied_p + first_p + sum_q F_pq dR_q), first_p = sum_q f_pq rho_q in_texels_q
+// with f the far share (Gauss-Seidel; it converges as the solve did, rho F < 1), and each patch
+// receives first_p + sum_q F_pq dR_q. Without it the extra light a lamp's near texels take from
+// the ceiling over it would still be reflected into the room as well.
 std::vector<Rgb> near_field_bounces(const Patches& patches, const PatchTransport& transport,
-                                    const std::vector<Rgb>& received) {
+                                    const std::vector<float>& far_share, const std::vector<Rgb>& in_texels,
+                                    const std::vector<Rgb>& applied) {
   const size_t n = patches.size();
+  std::vector<Rgb> source = applied, first(n);
+  for (size_t p = 0; p < n; ++p) {
+    for (uint64_t k = transport.row_start[p]; k < transport.row_start[p + 1]; ++k) {
+      const uint32_t q = transport.target[k];
+      first[p] += patches.reflectance[q] * in_texels[q] * far_share[k];
+    }
+    source[p] += first[p];
+  }
   std::vector<Rgb> reflected(n);
   float largest = 0;
   for (size_t p = 0; p < n; ++p) {
-    reflected[p] = patches.reflectance[p] * received[p];
+    reflected[p] = patches.reflectance[p] * source[p];
     largest = std::max({largest, std::fabs(reflected[p].x), std::fabs(reflected[p].y), std::fabs(reflected[p].z)});
   }
-  if (!(largest > 0)) return std::vector<Rgb>(n);
+  if (!(largest > 0)) return first;
   for (int sweep = 0; sweep < 500; ++sweep) {
     float change = 0;
     for (size_t p = 0; p < n; ++p) {
-      Rgb incoming = received[p];
+      Rgb incoming = source[p];
       for (uint64_t k = transport.row_start[p]; k < transport.row_start[p + 1]; ++k)
         incoming += reflected[transport.target[k]] * transport.form_factor[k];
       const Rgb b = patches.reflectance[p] * incoming, d = b - reflected[p];
@@ -117,7 +151,9 @@ std::vector<Rgb> near_field_bounces(const Patches& patches, const PatchTransport
     }
     if (change <= 1e-5f * largest) break;
   }
-  return gathered_irradiance(patches, transport, reflected);
+  std::vector<Rgb> bounces = gathered_irradiance(patches, transport, reflected);
+  for (size_t p = 0; p < n; ++p) bounces[p] += first[p];
+  return bounces;
 }
 
 // Texels in a corner light each other: what the floor's first row reflects onto the foot of a
@@ -327,20 +363,23 @@ GatheredLight finish_gather(const Elements& e, const Patches& patches, const Pat
   out.mean_direction = std::move(whole.mean_direction);
   if (rays > 0 && near_field) solve_near_indirect(e, patches, inputs.patch_indirect, whole.landings, rays, out.irradiance);
   const NearTally near = tally_near_field(e, patches, inputs, patch_exitance, direct, out.irradiance, whole.landings, rays);
-  std::vector<Rgb> correction = far_field_correction(patches, transport, near);
-  std::vector<Rgb> received = correction;  // per patch: the mean change of its texels' irradiance
+  std::vector<Rgb> in_texels(patches.size());  // per patch: the mean change its texels already hold
   for (const auto& [pq, x] : near) {
     const float to_mean = float(1.0 / patches.area[pq.first]);
-    received[pq.first] += x.excess.rgb() * to_mean;
-    received[pq.first] += x.direct_beyond.rgb() * to_mean;
+    in_texels[pq.first] += x.excess.rgb() * to_mean;
+    in_texels[pq.first] += x.direct_beyond.rgb() * to_mean;
   }
   // Far rays took their struck texels' own direct light, which over each struck texel sums to what
   // it sends (nothing to balance), but which changes what their patches receive from the solve's.
   for (size_t i = 0; i < e.size(); ++i)
     if (e.valid(i) && patches.patch_of_element[i] != UINT32_MAX)
-      received[patches.patch_of_element[i]] +=
+      in_texels[patches.patch_of_element[i]] +=
           whole.far_beyond_mean[i] * float(e.area[i] / patches.area[patches.patch_of_element[i]]);
-  const std::vector<Rgb> bounces = near_field_bounces(patches, transport, received);
+  std::vector<Rgb> level_change(patches.size());
+  for (size_t p = 0; p < patches.size(); ++p) level_change[p] = patches.reflectance[p] * in_texels[p];
+  const std::vector<float> far_share = far_form_factors(patches, transport, near);
+  std::vector<Rgb> correction = far_field_correction(patches, transport, near, far_share, level_change);
+  const std::vector<Rgb> bounces = near_field_bounces(patches, transport, far_share, in_texels, correction);
   for (size_t p = 0; p < patches.size(); ++p) correction[p] += bounces[p];
   apply_patch_changes(e, patches, correction, out.irradiance);
   if (stats) stats->fates = whole.fates;

@@ -59,6 +59,11 @@ struct Elements {
     float area;  // texels^2 of the page
   };
   std::vector<Piece> other_pieces;
+  // The valid samples by the cell of a grid `sample_cell` metres wide that holds them, sorted by
+  // key (nearby_samples.h); built by place_samples.
+  float sample_cell = 0;
+  std::vector<uint64_t> sample_cell_key;
+  std::vector<uint32_t> sample_cell_element;
 
   size_t size() const { return area.size(); }
   bool valid(size_t i) const { return !(flags[i] & kBuried); }

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstdlib>
 
+#include "baker/surface/nearby_samples.h"
+
 namespace radbake {
 
 // Where a wall crosses a texel, the texel's element lies on one side only; a hit on the other side
@@ -13,7 +15,8 @@ namespace radbake {
 // steps and corners (sees_within_texel): a window frame's stepped profile at 19 cm texels hid
 // every sample from the faces round it, and the sunlit frames' light was missing from the
 // FZK-Haus's rooms at every bounce (issue 57). A buried texel passes its hits to a neighbour as
-// well, two texels out at most.
+// well, two texels out at most, and where its chart has none, a sample of another part in sight of
+// the hit, four texels out at most, stands for it (nearby_samples.h).
 //
 // A gap thinner than a sixteenth of a texel (kUnderCover) is sealed: a ray from the open that
 // enters its slit, or one from inside that leaves by it, strikes nobody. Texels cannot resolve the
@@ -21,6 +24,12 @@ namespace radbake {
 // slit was the light of whichever texel's sample sat nearest the edge, so it grew and shrank with
 // the texel density (the Cornell box's ceiling beside a double-sided lamp +62% at 100 texels per
 // metre, +4% at 200). What a 0.1 mm gap truly lets out is a few tenths of a percent of its lamp.
+//
+// How far from a hit, in its texels, a sample of another part may stand for it, and how many of the
+// nearest are tried.
+constexpr float kNearbyTexels = 4;
+constexpr size_t kNearbyTries = 12;
+
 HitElement element_standing_for(const Elements& e, const Surface& surface, const RayTracer& tracer, const Hit& hit,
                                 uint8_t seen_from) {
   const int64_t j = element_at_point(e, surface, hit.triangle, hit.bary);
@@ -61,8 +70,19 @@ HitElement element_standing_for(const Elements& e, const Surface& surface, const
     if (e.valid(size_t(around[k])) && (e.flags[size_t(around[k])] & kUnderCover) == side &&
         sees(size_t(around[k])))
       return {around[k]};
-  if (!sees_j) return {-1, RayFate::OtherSide};
-  return e.valid(size_t(j)) ? HitElement{j} : HitElement{-1, RayFate::BuriedElement};
+  if (sees_j && e.valid(size_t(j))) return {j};
+  // Past the chart: the nearest sample of any part in sight of the hit, its face less than 120
+  // degrees from the hit's (further apart they are two sides of something thin). A sill's strip
+  // between a frame and the room has no texel of its own on that side; the frame's, the reveal's
+  // or the wall's beside it stands for it. Front faces struck that took no light on the FZK-Haus
+  // at production: gather rays 0.41% -> 0.16%, form-factor rays 0.61% -> 0.19%; the interior's
+  // light -1.56% -> -1.24% of the path tracer's (within 60 degrees and two texels: -1.51%).
+  const Vec3 facing = surface.normal[hit.triangle];
+  for (uint32_t k : samples_near(e, at, kNearbyTexels * surface.texel_size(hit.triangle), kNearbyTries))
+    if (size_t(k) != size_t(j) && (e.flags[k] & kUnderCover) == side &&
+        dot(surface.normal[e.triangle[k]], facing) > -0.5f && sees(k))
+      return {int64_t(k)};
+  return sees_j ? HitElement{-1, RayFate::BuriedElement} : HitElement{-1, RayFate::OtherSide};
 }
 
 int64_t element_for_hit(const Elements& e, const Surface& surface, const RayTracer& tracer, const Hit& hit,

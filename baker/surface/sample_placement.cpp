@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "baker/surface/elements.h"
+#include "baker/surface/nearby_samples.h"
 #include "baker/surface/ray_tracer.h"
 #include "baker/surface/sampling.h"
 
@@ -381,6 +382,7 @@ void place_samples(Elements& e, const Surface& surface, const RayTracer& tracer,
     }
   });
   std::vector<Elements::Piece>().swap(e.other_pieces);
+  index_samples(e, surface);
   progress.end();
 }
 

@@ -6,20 +6,19 @@ surface's area-weighted mean illuminance (report.json's surfaces) to the stored 
 reference (tests/fixtures/fzk_haus_surfaces_reference.csv, made by `./dev surfaces-reference` on
 the same atlas: each surface's mean and its standard error). Interior surfaces are those whose
 names the corpus does not give as exterior (corpus.json's exterior_surfaces: outer walls, roofs,
-site). With production, every interior surface of at least 10 m2 must come within 6% of the
+site). Every interior surface of at least 10 m2 must come within its preset's bound of the
 reference, plus twice the reference's standard error (what the reference's own noise may put
 between them at 95%); with each preset, the light on all interior surfaces, sum(area x mean),
 within its bound of the reference's. Issue 57 asks 1.5% at production and 2.5% at the defaults for
-the interior, and each large surface within 3% at production and 5% at the defaults: not met yet.
-The interior read -1.43% and -0.83% while far gather rays took their struck patch's mean light,
-which gave the rooms light that sunlit window frames send into the open; since they take the
-struck texel's own direct light (light conserved texel by texel) the interior reads -1.58% and
--2.47%, the upper slab -5.6% at production, and at the defaults single walls -29% and +4%: light
-still missing, not yet found (docs/accuracy.md). The bounds held here are those figures rounded
-up: 2% and 3%. Where the rays
-ended is checked too (report.json's counts): the front faces struck that took no light, other than
-through a sealed thin gap, are at most a bound (PRESETS) of the gather's and of the form factors'
-rays.
+the interior, and each large surface within 3% at production and 5% at the defaults. The interior
+reads -1.24% and -2.14%, within the issue's bounds, which are held here. The surfaces are not
+within theirs yet: the upper slab and two inner walls read -4.9% to -5.2% at production, and at the
+defaults two inner walls -11%: light still missing, not yet found (docs/accuracy.md). At the
+defaults those walls read -29% and +4% while the near field's change to what a patch receives
+reached near receivers twice. The bounds held on each surface are the figures measured, rounded
+up: 6% and 13%. Where the rays ended is checked too (report.json's counts): the front faces
+struck that took no light, other than through a sealed thin gap, are at most a bound (PRESETS) of
+the gather's and of the form factors' rays.
 
 usage: interior_surfaces.py RADBAKE CORPUS_DIR OUT_DIR REFERENCE_CSV
 """
@@ -32,12 +31,14 @@ import sys
 
 # Front faces struck that took no light, as shares of each kind of ray (not counting sealed thin
 # gaps, which keep their light by design). Before issue 57, production's gather 1.65% and form
-# factors 1.87%, the defaults' form factors 4.8%; after, 0.41%, 0.61% and 2.04% (the defaults send
-# more of their few form-factor rays from the bright patches, the sunlit frames, where most are
-# lost). Issue 57 asks 0.2%.
-# (preset options, bound on each interior surface of at least 10 m2 or None, bound on the interior's
+# factors 1.87%, the defaults' form factors 4.8%; since a sample of a nearby part in sight stands
+# for a hit that its own chart has none for (nearby_samples.h), 0.155%, 0.186% and 0.49% (the
+# defaults send more of their few form-factor rays from the bright patches, the sunlit frames,
+# where most are lost). Issue 57 asks 0.2%, held here at production; the defaults' form factors are
+# held to what they measure, rounded up.
+# (preset options, bound on each interior surface of at least 10 m2, bound on the interior's
 # light, bound on the gather's rays lost, on the form factors')
-PRESETS = [(["--quality", "production"], 0.06, 0.02, 0.008, 0.008), ([], None, 0.03, 0.008, 0.025)]
+PRESETS = [(["--quality", "production"], 0.06, 0.015, 0.002, 0.002), ([], 0.13, 0.025, 0.002, 0.006)]
 LARGEST_SURFACES_M2 = 10.0
 
 
@@ -83,7 +84,7 @@ def main():
                             f"past {interior_bound:.1%}")
         for k in sorted(interior, key=lambda k: -float(reference[k]["area_m2"])):
             area, lux = float(reference[k]["area_m2"]), float(reference[k]["mean_lx"])
-            if area < LARGEST_SURFACES_M2 or surface_bound is None:
+            if area < LARGEST_SURFACES_M2:
                 continue
             noise = 2 * float(reference[k]["standard_error_lx"]) / lux
             ratio = baked[k]["mean_lx"] / lux - 1

@@ -58,12 +58,15 @@ TEST(NearField, MakesWhereSurfacesMeetTheFloorAsThePathTracerSees) {
   RecordProperty("contact_bias_without", std::to_string(without.bias));
   RecordProperty("rmse_with", std::to_string(with.rmse));
   RecordProperty("rmse_without", std::to_string(without.rmse));
-  // Measured: contact texels -2.2% with the near field, +2.9% without; relative RMSE over all
-  // texels 2.2% and 3.4%. (While far rays took their struck patch's mean, not its texel's own direct
-  // light, without the near field read +10.2% and 7.0%.) 4%: that bias plus the gather's and the
-  // reference's noise over the ~90 contact texels (under 0.3%) and room for another seed's patches.
-  EXPECT_LT(std::fabs(with.bias), 0.04);
-  EXPECT_LT(with.rmse, 0.75 * without.rmse);
+  // Measured: contact texels -0.5% with the near field, +2.9% without; relative RMSE over all
+  // texels 1.3% and 3.4%. While the change the near field makes to what a patch receives reached
+  // the texels that see it through their near rays twice (once in the struck texels' own light,
+  // once more as a bounce through the whole form factor), -2.2% and 2.2%; while far rays took their
+  // struck patch's mean, not its texel's own direct light, without the near field read +10.2% and
+  // 7.0%. 1.5%: that bias plus the gather's and the reference's noise over the ~90 contact texels
+  // (under 0.3%) and room for another seed's patches; half the RMSE without it, where it reads 0.39.
+  EXPECT_LT(std::fabs(with.bias), 0.015);
+  EXPECT_LT(with.rmse, 0.5 * without.rmse);
 }
 
 // Issue 13's bound: at the production preset, each contact region of the Cornell box (one 256
