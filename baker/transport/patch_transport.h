@@ -19,7 +19,7 @@ namespace radbake {
 
 struct PatchTransport {
   // Row p in compressed form: targets[row_start[p] .. row_start[p + 1]) with their form factors.
-  // Balanced: A_p F_pq = A_q F_qp.
+  // Balanced: A_p F_pq = A_q F_qp, to within each row's scale to what its rays measured.
   std::vector<uint64_t> row_start;
   std::vector<uint32_t> target;
   std::vector<float> form_factor;

@@ -11,14 +11,14 @@ reference, plus twice the reference's standard error (what the reference's own n
 between them at 95%); with each preset, the light on all interior surfaces, sum(area x mean),
 within its bound of the reference's. Issue 57 asks 1.5% at production and 2.5% at the defaults for
 the interior, and each large surface within 3% at production and 5% at the defaults. The interior
-reads -1.24% and -2.14%, within the issue's bounds, which are held here. The surfaces are not
-within theirs yet: the upper slab and two inner walls read -4.9% to -5.2% at production, and at the
-defaults two inner walls -11%: light still missing, not yet found (docs/accuracy.md). At the
-defaults those walls read -29% and +4% while the near field's change to what a patch receives
-reached near receivers twice. The bounds held on each surface are the figures measured, rounded
-up: 6% and 13%. Where the rays ended is checked too (report.json's counts): the front faces
-struck that took no light, other than through a sealed thin gap, are at most a bound (PRESETS) of
-the gather's and of the form factors' rays.
+reads -0.61% and -1.27%, within the issue's bounds, which are held here. The surfaces are not all
+within theirs yet: the upper slab reads -3.6% at production, and at the defaults two inner walls
+-7.3% and -7.6% (before the form factors' balance kept each row to what it measured, -5.2% and
+-11.4%; before the near field's change reached near receivers once, the defaults' -29%). The
+bounds held on each surface are the figures measured, rounded up: 4% and 8%. Where the rays
+ended is checked too (report.json's counts): the front faces struck that took no light, other
+than through a sealed thin gap, are at most a bound (PRESETS) of the gather's and of the form
+factors' rays.
 
 usage: interior_surfaces.py RADBAKE CORPUS_DIR OUT_DIR REFERENCE_CSV
 """
@@ -38,7 +38,7 @@ import sys
 # held to what they measure, rounded up.
 # (preset options, bound on each interior surface of at least 10 m2, bound on the interior's
 # light, bound on the gather's rays lost, on the form factors')
-PRESETS = [(["--quality", "production"], 0.06, 0.015, 0.002, 0.002), ([], 0.13, 0.025, 0.002, 0.006)]
+PRESETS = [(["--quality", "production"], 0.04, 0.015, 0.002, 0.002), ([], 0.08, 0.025, 0.002, 0.006)]
 LARGEST_SURFACES_M2 = 10.0
 
 

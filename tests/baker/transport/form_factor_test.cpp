@@ -21,7 +21,8 @@ namespace {
 
 // F(A -> B) between square A (front facing `a_normal`) and the other square, by either method:
 // the area-weighted sum of the patch form factors from A's patches to B's.
-double form_factor(const Scene& scene, Vec3 a_normal, FormFactorMethod method, uint32_t amount, int block_size) {
+double form_factor(const Scene& scene, Vec3 a_normal, FormFactorMethod method, uint32_t amount, int block_size,
+                   uint64_t seed = 7) {
   const auto placed = test::placed_elements(scene, {32.0f, 256, 2});
   const Surface& surface = placed->surface;
   const RayTracer& tracer = *placed->tracer;
@@ -32,8 +33,8 @@ double form_factor(const Scene& scene, Vec3 a_normal, FormFactorMethod method, u
   Patches patches = build_patches(e, surface, blocks);
   PatchTransport t = method == FormFactorMethod::RayCast
                          ? trace_patch_transport(e, patches, surface, tracer, amount,
-                                                 std::vector<double>(patches.size(), 1.0), 7, progress)
-                         : hemicube_patch_transport(e, patches, surface, tracer, int(amount), 7, progress);
+                                                 std::vector<double>(patches.size(), 1.0), seed, progress)
+                         : hemicube_patch_transport(e, patches, surface, tracer, int(amount), seed, progress);
   auto on_a = [&](size_t p) { return dot(e.normal[patches.members[patches.first_member[p]]], a_normal) > 0.9f; };
   double area_a = 0, shared = 0;
   for (size_t p = 0; p < patches.size(); ++p) {
@@ -93,15 +94,22 @@ struct Trend {
 
 class FormFactorTrend : public ::testing::TestWithParam<Trend> {};
 
+// Ray-cast errors are the RMS over four seeds: each row keeps what its own rays measured, and one
+// seed's error at 4 rays a patch came out below another's at 64 (0.13% and 0.22%).
 TEST_P(FormFactorTrend, ErrorShrinksAsTheMeasureGetsFiner) {
   const Trend& c = GetParam();
   double error[3];
   uint32_t amounts[3] = {c.coarse, c.medium, c.fine};
+  const int seeds = c.method == FormFactorMethod::RayCast ? 4 : 1;  // the hemicube has no noise
   for (int k = 0; k < 3; ++k) {
-    double f = form_factor(c.scene(), kUp, c.method, amounts[k], 1);
-    error[k] = std::fabs(f / c.exact - 1);
+    double squares = 0, f = 0;
+    for (int s = 0; s < seeds; ++s) {
+      f = form_factor(c.scene(), kUp, c.method, amounts[k], 1, uint64_t(7 + s));
+      squares += (f / c.exact - 1) * (f / c.exact - 1);
+    }
+    error[k] = std::sqrt(squares / seeds);
     RecordProperty("error_" + std::to_string(amounts[k]), std::to_string(error[k]));
-    std::printf("%s %u: F = %.5f, error %.3f%%\n", c.name, amounts[k], f, 100 * error[k]);
+    std::printf("%s %u: F = %.5f (last seed), RMS error over %d seeds %.3f%%\n", c.name, amounts[k], f, seeds, 100 * error[k]);
   }
   EXPECT_GT(error[0], error[1]);
   EXPECT_GT(error[1], error[2]);
