@@ -187,7 +187,7 @@ OptionGroup<B> bake_group() {
        number<B>("--samples", "N", 2, 1 << 24, "paths", FIELD(bake.path_trace.samples),
                  "pathtrace: paths per texel; noise falls as 1/sqrt(N)"),
        number<B>("--tolerance", "X", 1e-9, 1, "", FIELD(bake.solve.tolerance),
-                 "stop when unshot light <= X of the light brought in"),
+                 "stop when no patch has more than X of its own light unshot"),
        choice<B>("--solver", "NAME",
                  std::vector<std::pair<std::string, Solver>>{
                      {"shooting", Solver::Shooting}, {"gauss-seidel", Solver::GaussSeidel}, {"jacobi", Solver::Jacobi}},

@@ -64,9 +64,10 @@ PlanDecision solve_outcome(const RadiositySolution& s, const SolveOptions& optio
   std::string what = std::to_string(s.iterations) + (options.solver == Solver::Shooting ? " shots" : " sweeps");
   std::string unshot = "unshot light " + percent(s.relative_unshot) + " of what the lights brought in";
   if (s.converged)
-    return {"interreflection", "stopped after " + what, unshot + ", within the tolerance of " + percent(options.tolerance)};
+    return {"interreflection", "stopped after " + what,
+            unshot + "; every patch's within the tolerance of " + percent(options.tolerance) + " of its own light"};
   return {"interreflection", "stopped after " + what + " by the iteration guard",
-          unshot + ", above the tolerance of " + percent(options.tolerance)};
+          unshot + "; some patch's above the tolerance of " + percent(options.tolerance) + " of its own light"};
 }
 
 // The chunks a texel stage is shared in: about 256, of 1,024 texels or more, whole blocks of 256

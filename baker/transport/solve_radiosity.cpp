@@ -71,28 +71,30 @@ V residual(const Problem<V>& pb, const Incoming& in, const std::vector<V>& b, si
   return pb.reflectance[q] * h - b[q];
 }
 
-// Residual of the current estimate: what each patch would still change by, as power, summed per
-// enclosure into `per_enclosure`; returns the total.
+// A patch is open while more than the tolerance of its own light is still to come: unshot (or
+// residual) exitance above tolerance times its exitance so far. Held per patch, not per enclosure:
+// a room lit through a window shares its enclosure with the sunlit ground outside, whose input
+// dwarfs the room's; held to that input, the room stopped with 4-6% of its light unshot, which
+// the ambient term spread over the ground (bench/window_room at preview). Per patch, what is still
+// to arrive anywhere is about the tolerance over (1 - rho) of what is there.
 template <typename V>
-double residual_power(const Problem<V>& pb, const Incoming& in, const std::vector<V>& b,
-                      std::vector<double>& per_enclosure) {
-  per_enclosure.assign(pb.enclosures.count, 0.0);
-  double total = 0;
-  for (size_t q = 0; q < pb.size(); ++q) {
-    double power = mean_abs(residual(pb, in, b, q)) * pb.area(q);
-    per_enclosure[pb.enclosures.of_patch[q]] += power;
-    total += power;
-  }
-  return total;
+bool open_patch(V still_to_come, V exitance, double tolerance) {
+  return mean_abs(still_to_come) > tolerance * mean(exitance);
 }
 
-// Enclosures whose unshot (or residual) power is still above the tolerance times the power the
-// direct light brings into them. Each is held to its own input: a dim room beside a bright one
-// is solved as finely as if it were alone.
-size_t open_enclosures(const std::vector<double>& unshot, const std::vector<double>& input, double tolerance) {
-  size_t open = 0;
-  for (size_t e = 0; e < unshot.size(); ++e) open += unshot[e] > tolerance * input[e];
-  return open;
+// Residual of the current estimate: what each patch would still change by. Returns the total
+// power; `open` is the number of open patches.
+template <typename V>
+double residual_power(const Problem<V>& pb, const Incoming& in, const std::vector<V>& b, double tolerance,
+                      size_t& open) {
+  double total = 0;
+  open = 0;
+  for (size_t q = 0; q < pb.size(); ++q) {
+    const V r = residual(pb, in, b, q);
+    total += mean_abs(r) * pb.area(q);
+    open += open_patch(r, b[q], tolerance);
+  }
+  return total;
 }
 
 // Cohen et al. 1988: the unshot light, spread evenly and bounced by the mean reflectance, per
@@ -152,7 +154,7 @@ void show(const Problem<V>& pb, const SolveOptions& options, const SolveObserver
 struct Outcome {
   size_t iterations = 0;
   double unshot_power = 0;
-  bool converged = false;  // every enclosure within the tolerance
+  bool converged = false;  // every patch within the tolerance
 };
 
 // Saves the solver's state when it is time (SolveSaving), and gives back a saved one.
@@ -210,8 +212,14 @@ Outcome shoot(const Problem<V>& pb, const std::vector<double>& input, const Solv
     heap.push_back({key, p});
     std::push_heap(heap.begin(), heap.end());
   };
-  std::vector<double> power(n), enclosure_unshot(enclosures.count, 0.0);
+  std::vector<double> power(n);
   auto relative = [&](uint32_t p) { return power[p] / input[enclosures.of_patch[p]]; };
+  auto open = [&](uint32_t p) { return open_patch(unshot[p], exitance[p], options.tolerance); };
+  auto count_open = [&] {
+    size_t count = 0;
+    for (size_t q = 0; q < n; ++q) count += open(uint32_t(q));
+    return count;
+  };
   Outcome out;
   size_t open_count = 0;
   auto write_state = [&](ByteWriter& w) {
@@ -220,7 +228,6 @@ Outcome shoot(const Problem<V>& pb, const std::vector<double>& input, const Solv
     w.put_vector(exitance);
     w.put_vector(unshot);
     w.put_vector(power);
-    w.put_vector(enclosure_unshot);
     w.put_vector(heap);
   };
   if (std::optional<Bytes> state = saver.saved()) {
@@ -230,56 +237,48 @@ Outcome shoot(const Problem<V>& pb, const std::vector<double>& input, const Solv
     exitance = in.get_vector<V>();
     unshot = in.get_vector<V>();
     power = in.get_vector<double>();
-    enclosure_unshot = in.get_vector<double>();
     heap = in.get_vector<HeapEntry>();
-    if (exitance.size() != n || unshot.size() != n || power.size() != n || enclosure_unshot.size() != enclosures.count ||
+    if (exitance.size() != n || unshot.size() != n || power.size() != n ||
         std::any_of(heap.begin(), heap.end(), [&](const HeapEntry& h) { return h.patch >= n; }))
       throw InputError("the checkpoint's radiosity solve is for other patches");
   } else {
     for (size_t p = 0; p < n; ++p) {
       unshot[p] = exitance[p] = pb.reflectance[p] * pb.direct[p];
       power[p] = mean_power(unshot[p], pb.area(p));
-      enclosure_unshot[enclosures.of_patch[p]] += power[p];
       if (power[p] > 0) push(relative(uint32_t(p)), uint32_t(p));
     }
-    open_count = open_enclosures(enclosure_unshot, input, options.tolerance);
+    open_count = count_open();
   }
-  auto open = [&](uint32_t e) { return enclosure_unshot[e] > options.tolerance * input[e]; };
   size_t next_report = 0;
   while (open_count > 0 && !heap.empty() && out.iterations < options.max_iterations) {
     const HeapEntry top = heap.front();
     std::pop_heap(heap.begin(), heap.end());
     heap.pop_back();
     const uint32_t p = top.patch;
-    const uint32_t e = enclosures.of_patch[p];
-    if (top.key != relative(p) || !open(e)) continue;  // stale, or its enclosure is done
+    if (top.key != relative(p) || !open(p)) continue;  // stale, or done until it receives more
     V shot = unshot[p] * pb.area(p);  // power leaving p, lm per channel
     unshot[p] = {};
-    enclosure_unshot[e] -= power[p];
     power[p] = 0;
+    --open_count;
     for (uint64_t k = t.row_start[p]; k < t.row_start[p + 1]; ++k) {
       uint32_t q = t.target[k];  // in p's enclosure, by definition
+      const bool was_open = open(q);
       V gain = pb.reflectance[q] * shot * (t.form_factor[k] / pb.area(q));
       exitance[q] += gain;
       unshot[q] += gain;
-      double added = mean_power(gain, pb.area(q));
-      power[q] += added;
-      enclosure_unshot[e] += added;
+      power[q] += mean_power(gain, pb.area(q));
+      open_count = open_count + open(q) - was_open;
       push(relative(q), q);
     }
-    open_count -= !open(e);
     ++out.iterations;
     show(pb, options, observer, out.iterations, exitance, unshot);
-    // Now and then: recompute the sums, so floating-point drift stays out of the stopping test,
+    // Now and then: count the open patches afresh, so that no rounding keeps the count from zero,
     // and drop stale heap entries, so the heap stays linear in the patch count.
     if (out.iterations % 4096 == 0 || heap.size() > 8 * n + 1024) {
-      enclosure_unshot.assign(enclosures.count, 0.0);
       heap.clear();
-      for (size_t q = 0; q < n; ++q) {
-        enclosure_unshot[enclosures.of_patch[q]] += power[q];
+      for (size_t q = 0; q < n; ++q)
         if (power[q] > 0) push(relative(uint32_t(q)), uint32_t(q));
-      }
-      open_count = open_enclosures(enclosure_unshot, input, options.tolerance);
+      open_count = count_open();
     }
     if (out.iterations >= next_report) {
       progress.advance(0);
@@ -300,13 +299,12 @@ void residual_per_patch(const Problem<V>& pb, const Incoming& in, const std::vec
 }
 
 template <typename V>
-Outcome gather(const Problem<V>& pb, const std::vector<double>& input, const SolveOptions& options,
+Outcome gather(const Problem<V>& pb, const SolveOptions& options,
                const SolveObserver& observer, Progress& progress, SolveSaver& saver, std::vector<V>& b,
                std::vector<V>& unshot) {
   const size_t n = pb.size();
   Incoming in = transpose(pb.patches, pb.transport);
   std::vector<V> next(n);
-  std::vector<double> residual;
   Outcome out;
   auto write_state = [&](ByteWriter& w) {
     w.put(uint64_t(out.iterations));
@@ -318,8 +316,8 @@ Outcome gather(const Problem<V>& pb, const std::vector<double>& input, const Sol
     b = r.get_vector<V>();
     if (b.size() != n) throw InputError("the checkpoint's radiosity solve is for other patches");
   }
-  out.unshot_power = residual_power(pb, in, b, residual);
-  size_t open_count = open_enclosures(residual, input, options.tolerance);
+  size_t open_count = 0;
+  out.unshot_power = residual_power(pb, in, b, options.tolerance, open_count);
   while (open_count > 0 && out.iterations < options.max_iterations) {
     for (size_t q = 0; q < n; ++q) {
       V h = pb.direct[q];
@@ -329,8 +327,7 @@ Outcome gather(const Problem<V>& pb, const std::vector<double>& input, const Sol
     }
     if (options.solver == Solver::Jacobi) b.swap(next);
     ++out.iterations;
-    out.unshot_power = residual_power(pb, in, b, residual);
-    open_count = open_enclosures(residual, input, options.tolerance);
+    out.unshot_power = residual_power(pb, in, b, options.tolerance, open_count);
     if (observer.every > 0 && out.iterations % observer.every == 0) {
       residual_per_patch(pb, in, b, unshot);
       show(pb, options, observer, out.iterations, b, unshot);
@@ -360,7 +357,7 @@ void solve(const Problem<V>& pb, const SolveOptions& options, Progress& progress
   SolveSaver saver(saving, channels(V{}));
   Outcome out = options.solver == Solver::Shooting
                     ? shoot(pb, input, options, observer, progress, saver, exitance, unshot)
-                    : gather(pb, input, options, observer, progress, saver, exitance, unshot);
+                    : gather(pb, options, observer, progress, saver, exitance, unshot);
   const Rgb colour = options.one_channel_colour;
   const double to_lumens = channels(V{}) == 1 ? mean(colour) : 1.0;
   s.iterations = out.iterations;

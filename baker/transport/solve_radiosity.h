@@ -1,9 +1,10 @@
 // The radiosity equation at patch level for reflected light: B_p = rho_p (D_p + sum_q F_pq B_q),
 // with D_p the direct irradiance (from lights and emitting surfaces) and F the ray-cast transport.
 // Solved by progressive shooting (Cohen et al. 1988) or by Jacobi / Gauss-Seidel gathering; all
-// stop when the unshot energy falls under a tolerance, never after a fixed number of bounces.
-// Enclosures (patches that exchange light, find_enclosures) are held to the tolerance and given
-// an ambient term each, so a dim room beside a bright one is solved as if it were alone.
+// stop when no patch has more than a tolerance of its own light still to come, never after a
+// fixed number of bounces, so a dim room beside a bright one is solved as finely as if it were
+// alone. Enclosures (patches that exchange light, find_enclosures) are each given an ambient term
+// for what is left.
 #pragma once
 
 #include <cstddef>
@@ -22,7 +23,7 @@ enum class Solver { Shooting, GaussSeidel, Jacobi };
 
 struct SolveOptions {
   Solver solver = Solver::Shooting;
-  double tolerance = 1e-3;  // stop when, in every enclosure, unshot power <= tolerance * power the lights bring into it
+  double tolerance = 1e-3;  // stop when, in every patch, unshot exitance <= tolerance * its exitance
   bool ambient_term = true; // add Cohen's ambient estimate of the light still unshot to the result
   // A guard against a solve that cannot converge (it never should with reflectance < 1); reaching
   // it is reported as non-convergence, not passed off as a result.
