@@ -41,11 +41,14 @@ bool staging_exists(const std::string& parent) {
 }
 
 // Starts `radbake args...` in the background, stdout and stderr into `log`.
-pid_t start_radbake(const std::vector<std::string>& args, const std::string& log, const char* preload = nullptr) {
+// `preload`: a library to load first; it makes the file `began` when it starts (slow_library_start.cpp).
+pid_t start_radbake(const std::vector<std::string>& args, const std::string& log, const char* preload = nullptr,
+                    const std::string& began = "") {
   pid_t pid = fork();
   if (pid == 0) {
     if (preload) {
       setenv("LD_PRELOAD", preload, 1);
+      setenv("RADBAKE_TEST_LIBRARY_BEGAN", began.c_str(), 1);
       setenv("ASAN_OPTIONS", "verify_asan_link_order=0", 1);  // the sanitizer build's runtime is not first then
     }
     std::vector<char*> argv{const_cast<char*>(RADBAKE_BINARY)};
@@ -58,14 +61,21 @@ pid_t start_radbake(const std::vector<std::string>& args, const std::string& log
   return pid;
 }
 
-// Waits (up to a minute: loading is slow on a busy machine) until the bake has its staging folder.
-bool wait_for_staging(const std::string& parent, pid_t pid) {
+// Waits (up to a minute: loading is slow on a busy machine) until `ready` holds; false if the
+// process ended first or it never did.
+template <typename Ready>
+bool wait_until(Ready ready, pid_t pid) {
   for (int i = 0; i < 1200; ++i) {
-    if (staging_exists(parent)) return true;
+    if (ready()) return true;
     if (waitpid(pid, nullptr, WNOHANG) == pid) return false;
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
   }
   return false;
+}
+
+// Until the bake has its staging folder.
+bool wait_for_staging(const std::string& parent, pid_t pid) {
+  return wait_until([&] { return staging_exists(parent); }, pid);
 }
 
 int exit_status(pid_t pid) {
@@ -211,13 +221,16 @@ TEST(Interrupt, SigtermDuringLightmapUvGenerationEndsTheBakeAndLeavesNothing) {
 // with no "cancelled" line: its 272 shared libraries take about 0.2 s to start, and the signals
 // were blocked only when main began. They are now blocked before any library starts. A library
 // preloaded to take 2 s to start (tests/support/slow_library_start.cpp) makes that moment long
-// enough to signal into.
+// enough to signal into. The signal goes once that library has begun (radbake blocks signals
+// before it, from .preinit_array): after a fixed half second, a loaded machine had not yet loaded
+// radbake that far, and the signal's default action ended it.
 TEST(Interrupt, ASignalWhileTheLibrariesStartEndsWithTheCancelledLine) {
   const std::string parent = test::fresh_folder("outdir_sigterm_start");
   fs::create_directories(parent + "/in");
   const std::string scene = write_lit_mesh(parent + "/in", test::bumpy_torus(8, 6));
-  pid_t bake = start_radbake({"bake", scene, "-o", parent + "/out"}, parent + "/log", SLOW_LIBRARY_START);
-  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  const std::string began = parent + "/slow_library_began";
+  pid_t bake = start_radbake({"bake", scene, "-o", parent + "/out"}, parent + "/log", SLOW_LIBRARY_START, began);
+  ASSERT_TRUE(wait_until([&] { return fs::exists(began); }, bake)) << test::slurp(parent + "/log");
   ASSERT_EQ(test::slurp(parent + "/log"), "") << "radbake began before the slow library let it";
   kill(bake, SIGTERM);
   const int status = exit_status(bake);
