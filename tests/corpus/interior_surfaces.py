@@ -19,8 +19,8 @@ bounds held on each surface are the figures measured, rounded up: 4% and 10% (th
 reads -9.8% to +2.7% at the defaults with the seed, the other -6.3% to -8.9%). What keeps them there
 is the texels' size, and at the defaults their 3 m patches (docs/accuracy.md, "What the rest is"): a gather that takes the path tracer's
 own light of each struck texel still reads the slab -2.8%, and with texels half the size
-(--density 10) production reads it -0.3% and every large interior surface within 3.4% but the
-dimmest wall (57 lx, lit through doors only: +3% to +8% with the seed). Where the rays
+(--density 10) production reads it -0.3% and every large interior surface within 3.5% but the
+dimmest wall (57 lx, lit through doors only: +1.4% to +5.7% with the seed). Where the rays
 ended is checked too (report.json's counts): the front faces struck that took no light, other
 than through a sealed thin gap, are at most a bound (PRESETS) of the gather's and of the form
 factors' rays.
