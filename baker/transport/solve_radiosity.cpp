@@ -272,8 +272,8 @@ Outcome shoot(const Problem<V>& pb, const std::vector<double>& input, const Solv
     }
     ++out.iterations;
     show(pb, options, observer, out.iterations, exitance, unshot);
-    // Now and then: count the open patches afresh, so that no rounding keeps the count from zero,
-    // and drop stale heap entries, so the heap stays linear in the patch count.
+    // Now and then: count the open patches afresh, a check on the count kept shot by shot, and
+    // drop stale heap entries, so the heap stays linear in the patch count.
     if (out.iterations % 4096 == 0 || heap.size() > 8 * n + 1024) {
       heap.clear();
       for (size_t q = 0; q < n; ++q)
