@@ -10,7 +10,7 @@
 // --write-reference (the same density and page size give the same texels): a path-traced one
 // (--method pathtrace) also writes its texels' standard errors, and runs against it then report
 // their error with the reference's noise taken out. --dump-texels writes each compared texel's
-// position, normal, lux and reference lux (and its noise) for looking at regions;
+// element (texel) index, position, normal, area, instance (the report's surface), lux and reference lux (and its noise) for looking at regions;
 // --cornell-regions adds the Cornell box's contact regions (tests/support/cornell_regions.h).
 #include <sys/resource.h>
 
@@ -242,11 +242,13 @@ int run(int argc, char** argv) {
     }
     if (!dump_texels.empty()) {
       std::ofstream out(dump_texels);
-      out << "x,y,z,nx,ny,nz,lux,reference_lux,reference_noise_lux\n";
+      const Surface surface = build_surface(study.scene, atlas);
+      out << "element,x,y,z,nx,ny,nz,area_m2,instance,lux,reference_lux,reference_noise_lux\n";
       for (size_t i = 0; i < e.size(); ++i)
         if (e.valid(i))
-          out << e.position[i].x << ',' << e.position[i].y << ',' << e.position[i].z << ',' << e.normal[i].x << ','
-              << e.normal[i].y << ',' << e.normal[i].z << ',' << sum(result.irradiance[i]) / 3 << ','
+          out << i << ',' << e.position[i].x << ',' << e.position[i].y << ',' << e.position[i].z << ',' << e.normal[i].x << ','
+              << e.normal[i].y << ',' << e.normal[i].z << ',' << e.area[i] << ',' << surface.instance[e.triangle[i]]
+              << ',' << sum(result.irradiance[i]) / 3 << ','
               << sum(exact[i]) / 3 << ',' << (reference_noise.empty() ? 0.0f : reference_noise[i]) << '\n';
     }
     if (!reference_noise.empty()) {

@@ -365,6 +365,7 @@ void interreflect(const Elements& elements, const Surface& surface, const RayTra
 
   report.patches = patches.size();
   report.patch_block_size = patches.block_size;
+  report.mean_free_path_m = light_between.mean_free_path_m;
   report.subdivision_rounds = light_between.rounds;
   report.solver_iterations = solution.iterations;
   report.solved_channels = solution.channels;

@@ -34,6 +34,7 @@ struct BakeReport {
   size_t page_texels = 0, elements = 0, valid_elements = 0, buried_elements = 0, moved_samples = 0;
   size_t patches = 0;
   int patch_block_size = 0;
+  double mean_free_path_m = 0;  // 0: not measured (a patch size given, or no light between surfaces)
   std::vector<SubdivisionRound> subdivision_rounds;
   uint64_t rays = 0;
   std::vector<StageTime> stage_times;

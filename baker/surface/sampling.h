@@ -37,6 +37,7 @@ enum class Stream : uint64_t {
   SensorGather,
   View,
   LightProbe,
+  FreePath,
 };
 
 // A counter-based generator for one (seed, stream, key) triple.

@@ -6,6 +6,7 @@
 
 #include "baker/sharing/byte_stream.h"
 #include "baker/sharing/shared_stage.h"
+#include "baker/transport/free_path.h"
 #include "baker/transport/hemicube_transport.h"
 #include "base/errors.h"
 
@@ -250,7 +251,13 @@ Interreflection solve_interreflection(const Elements& elements, const Surface& s
   SolveObserver solve_observer{observer.every, [&](const std::vector<Rgb>& exitance, size_t iteration) {
                                  observer.see(out.patches, out.transport, exitance, iteration);
                                }};
-  out.patches = build_patches(elements, surface, patch_options);
+  PatchOptions patching = patch_options;
+  if (patching.block_size <= 0 && patching.mean_free_path_m <= 0) {
+    const double free_path = mean_free_path(elements, surface, tracer, seed);
+    if (std::isfinite(free_path)) patching.mean_free_path_m = free_path;
+  }
+  out.mean_free_path_m = patching.mean_free_path_m;
+  out.patches = build_patches(elements, surface, patching);
   std::vector<Rgb> patch_direct;
   std::vector<double> power;
   first_bounce(elements, out.patches, direct, patch_direct, power);

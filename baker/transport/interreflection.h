@@ -42,6 +42,7 @@ struct Interreflection {
   RadiositySolution solution;
   std::vector<SubdivisionRound> rounds;  // one per solve
   double form_factor_seconds = 0, solve_seconds = 0;
+  double mean_free_path_m = 0;  // what sized automatic patches (PatchOptions); 0 when not measured
 };
 
 // Sees the solve's progressive estimate every `every` shots or sweeps, with the patches and form

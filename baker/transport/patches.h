@@ -35,12 +35,19 @@ struct PatchOptions {
   // resolution (as Enlighten sizes its clusters in metres, apart from the output texels).
   size_t elements_per_patch = 32;
   size_t patch_cap = 4096;
+  // The scene's mean free path (mean_free_path), metres; 0: unknown. Where the budget's automatic
+  // blocks are wider than it, the widest blocks within it are taken if they are at most twice the
+  // budget: a patch spreads its light evenly, and one as wide as a room spreads one side's light
+  // over the other.
+  double mean_free_path_m = 0;
 };
 
 // The most patches `options` allow for `elements` elements.
 size_t patch_budget(const PatchOptions& options, size_t elements);
 
-// Square blocks of `block_size` texels (a power of two; a given size is rounded down to one).
+// Square blocks of `block_size` texels (a power of two; a given size is rounded down to one); with
+// none given, the smallest power of two within the budget (or, where that is wider than the mean
+// free path, the widest within it if at most twice the budget).
 Patches build_patches(const Elements& elements, const Surface& surface, const PatchOptions& options);
 
 // The same elements with every patch marked in `split` (and larger than a texel) cut into the

@@ -10,6 +10,7 @@
 #include "baker/surface/material_sampler.h"
 #include "baker/surface/ray_tracer.h"
 #include "baker/surface/surface.h"
+#include "baker/transport/free_path.h"
 #include "baker/transport/patches.h"
 #include "io/gltf/gltf_loader.h"
 #include "support/scene_builders.h"
@@ -68,6 +69,35 @@ TEST(PatchBudget, ProductionPatchesStayWithinTheCapAtSixHundredTexelsPerMetre) {
   EXPECT_GT(elements, 600'000u);
   EXPECT_LE(patches.size(), 16'384u);
   EXPECT_EQ(patches.block_size, 8);
+}
+
+TEST(PatchBudget, PastTheBudgetPatchesStayWithinTheMeanFreePath) {
+  // A 4 x 2.5 x 4 m room at 10 texels a metre (10 cm texels), its light crossing 2.2 m between
+  // walls on average (4 V / S), and a budget of 30 patches: the budget alone takes 32-texel
+  // (3.2 m) blocks, 17 patches as wide as the room, where one patch would spread the light of a
+  // floor's lit half over its dark half. Knowing the mean free path, up to twice the budget may
+  // be taken for blocks no wider than it: 16-texel (1.6 m) blocks, 47 patches.
+  Scene scene;
+  test::add_box(scene, {0, 0, 0}, {4, 2.5f, 4}, true, test::add_material(scene, {0.5f, 0.5f, 0.5f}));
+  AtlasOptions atlas;
+  atlas.texel_density = 10;
+  const auto placed = test::placed_elements(scene, atlas);
+  PatchOptions options;
+  options.max_patches = 30;
+  const Patches by_budget = build_patches(placed->elements, placed->surface, options);
+  options.mean_free_path_m = mean_free_path(placed->elements, placed->surface, *placed->tracer, 1);
+  const Patches by_free_path = build_patches(placed->elements, placed->surface, options);
+  RecordProperty("mean_free_path_m", std::to_string(options.mean_free_path_m));
+  RecordProperty("patches", std::to_string(by_budget.size()) + " and " + std::to_string(by_free_path.size()));
+  EXPECT_NEAR(options.mean_free_path_m, 160.0 / 72.0, 0.03 * 160.0 / 72.0);  // as FreePath's test bounds it
+  EXPECT_LE(by_budget.size(), 30u);
+  EXPECT_GT(by_budget.block_size * 0.1, options.mean_free_path_m);
+  EXPECT_LE(by_free_path.block_size * 0.1, options.mean_free_path_m);
+  EXPECT_GT(by_free_path.size(), 30u);
+  EXPECT_LE(by_free_path.size(), 60u);
+  // A block size given outright is what the patches get, whatever the free path.
+  options.block_size = 4;
+  EXPECT_EQ(build_patches(placed->elements, placed->surface, options).block_size, 4);
 }
 
 }  // namespace
