@@ -10,7 +10,8 @@
 // --write-reference (the same density and page size give the same texels): a path-traced one
 // (--method pathtrace) also writes its texels' standard errors, and runs against it then report
 // their error with the reference's noise taken out. --dump-texels writes each compared texel's
-// element (texel) index, position, normal, area, instance (the report's surface), lux and reference lux (and its noise) for looking at regions;
+// element index, position, normal, area, instance (the report's surface), lux and reference lux
+// (and its noise) for looking at regions;
 // --cornell-regions adds the Cornell box's contact regions (tests/support/cornell_regions.h).
 #include <sys/resource.h>
 
@@ -210,9 +211,9 @@ int run(int argc, char** argv) {
                                  {"mean_lux", total / double(std::max<size_t>(1, result.report.valid_elements))}};
   if (!exact.empty()) {
     // Undilated pages: texels no element covers are black in both and not compared.
-    std::vector<AtlasPage> pages = build_surface(study.scene, atlas).pages;
-    LightmapDifference d = compare_lightmaps(compose_pages(e, exact, pages, false),
-                                             compose_pages(e, result.irradiance, pages, false), {});
+    const Surface surface = build_surface(study.scene, atlas);
+    LightmapDifference d = compare_lightmaps(compose_pages(e, exact, surface.pages, false),
+                                             compose_pages(e, result.irradiance, surface.pages, false), {});
     line["rmse"] = d.all.rmse;
     line["p99"] = d.all.p99;
     line["reference_mean_lux"] = d.all.reference_level;
@@ -242,7 +243,6 @@ int run(int argc, char** argv) {
     }
     if (!dump_texels.empty()) {
       std::ofstream out(dump_texels);
-      const Surface surface = build_surface(study.scene, atlas);
       out << "element,x,y,z,nx,ny,nz,area_m2,instance,lux,reference_lux,reference_noise_lux\n";
       for (size_t i = 0; i < e.size(); ++i)
         if (e.valid(i))
