@@ -120,6 +120,10 @@ bool under_cover(const Surface& surface, const RayTracer& tracer, uint32_t trian
 bool sees_within_texel(const Surface& surface, const RayTracer& tracer, Vec3 from, uint32_t from_triangle, Vec3 to,
                        uint32_t to_triangle);
 
+// Whether `point` (lifted off its surface, whose geometric normal is `ng`) is inside geometry: it
+// sees back faces in half its hemisphere (16 cosine-weighted rays stratified by `pattern`).
+bool buried_at(const RayTracer& tracer, Vec3 point, Vec3 ng, uint32_t pattern);
+
 // The element whose texel holds point `bary` of `triangle` (buried ones included), or -1.
 int64_t element_at_point(const Elements& elements, const Surface& surface, uint32_t triangle, Vec2 bary);
 

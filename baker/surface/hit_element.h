@@ -17,7 +17,8 @@ int64_t element_for_hit(const Elements& elements, const Surface& surface, const 
                         uint8_t seen_from);
 constexpr uint8_t kFromTheOpen = 0;  // seen_from for a point off the surfaces (sensors, probes, eyes)
 
-// element_for_hit's answer with, for none, why: NoElement, OtherSide or SealedGap.
+// element_for_hit's answer with, for none, why: NoElement, BuriedElement, OtherSide, SealedGap or
+// InsideGeometry.
 struct HitElement {
   int64_t element = -1;
   RayFate fate = RayFate::TookLight;

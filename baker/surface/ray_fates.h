@@ -18,12 +18,17 @@ enum class RayFate : uint8_t {
   BuriedElement,  // struck a front face whose texel's element is buried or has no patch
   OtherSide,      // struck a front face whose texel's sample, and its neighbours', lie across a wall
   SealedGap,      // entered or left a gap thinner than a sixteenth of a texel through its mouth
+  // struck a front face, with no element standing for it, at a point inside geometry: one that sees
+  // back faces in half its hemisphere, the test that buries texels (the inside of stacked or
+  // interpenetrating parts, which a path there would find dark as well)
+  InsideGeometry,
 };
-constexpr size_t kRayFateCount = 7;
+constexpr size_t kRayFateCount = 8;
 
 // The name report.json gives each fate, in RayFate's order.
 constexpr std::array<const char*, kRayFateCount> kRayFateNames = {
-    "took_light", "escaped", "back_face", "no_element", "buried_element", "other_side", "sealed_gap"};
+    "took_light", "escaped", "back_face", "no_element", "buried_element", "other_side", "sealed_gap",
+                                                                 "inside_geometry"};
 
 struct RayFates {
   std::array<uint64_t, kRayFateCount> count{};
@@ -39,7 +44,8 @@ struct RayFates {
     for (uint64_t c : count) sum += c;
     return sum;
   }
-  // Front faces struck that gave no light: the rays lost to the scene's own detail.
+  // Front faces struck that gave no light: the rays lost to the scene's own detail, and to its
+  // closed spaces (SealedGap, InsideGeometry).
   uint64_t front_face_took_none() const { return total() - (*this)[RayFate::TookLight] - (*this)[RayFate::Escaped] -
                                                  (*this)[RayFate::BackFace]; }
   double share(RayFate fate) const { return total() ? double((*this)[fate]) / double(total()) : 0.0; }

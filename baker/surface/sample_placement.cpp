@@ -57,6 +57,15 @@ bool sees_within_texel(const Surface& surface, const RayTracer& tracer, Vec3 fro
   return false;
 }
 
+bool buried_at(const RayTracer& tracer, Vec3 point, Vec3 ng, uint32_t pattern) {
+  int back = 0;
+  for (int k = 0; k < kBurialProbes; ++k) {
+    const Hit hit = tracer.intersect(point, cosine_direction(ng, cmj_sample(uint32_t(k), kBurialProbes, pattern)), 0.0f, INFINITY);
+    back += !hit.missed() && !hit.front;
+  }
+  return back >= kBuriedBackfaceFraction * kBurialProbes;
+}
+
 namespace {
 
 // A texel across a cover's edge: it keeps the cells and the share of its area on its sample's
@@ -142,17 +151,6 @@ CoverSplit split_at_cover(const Elements& e, const Surface& surface, const RayTr
   return split;
 }
 
-
-// Whether a point (lifted off its surface, normal ng) is inside geometry: it sees back faces in
-// half its hemisphere.
-bool buried_at(const RayTracer& tracer, Vec3 point, Vec3 ng, uint32_t pattern) {
-  int back = 0;
-  for (int k = 0; k < kBurialProbes; ++k) {
-    const Hit hit = tracer.intersect(point, cosine_direction(ng, cmj_sample(uint32_t(k), kBurialProbes, pattern)), 0.0f, INFINITY);
-    back += !hit.missed() && !hit.front;
-  }
-  return back >= kBuriedBackfaceFraction * kBurialProbes;
-}
 
 // Settles element i's sample where it lies: pushed past a wall standing on the surface, marked
 // near geometry, under a cover or buried, its footprint cut to the cells the sample sees along the

@@ -24,7 +24,8 @@ namespace {
 constexpr char kMagic[8] = {'r', 'a', 'd', 'b', 'a', 'k', 'e', 'C'};
 // 2: form factor rows and gather chunks keep where their rays ended (ray_fates.h).
 // 3: gather chunks keep each texel's lost share and what its far rays took beyond patch means.
-constexpr uint32_t kVersion = 3;
+// 4: ray fates count front faces struck inside geometry.
+constexpr uint32_t kVersion = 4;
 const char* kManifest = "checkpoint.json";
 constexpr uint64_t kMostManifestBytes = 1 << 20;  // it holds a fingerprint, a scene's name and a version
 

@@ -254,7 +254,7 @@ TEST(Cli, BakeWritesTheFolderAndReportsProgressAsPlainLines) {
     EXPECT_GT(fates["rays"].get<double>(), 1e5) << kind;
     double sum = 0;
     for (const char* fate : {"took_light", "escaped", "back_face", "no_element", "buried_element", "other_side",
-                             "sealed_gap"})
+                             "sealed_gap", "inside_geometry"})
       sum += fates[fate].get<double>();
     EXPECT_NEAR(sum, 1.0, 1e-9) << kind;
     EXPECT_GT(fates["escaped"].get<double>(), 0.05) << kind;

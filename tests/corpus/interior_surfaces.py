@@ -22,9 +22,9 @@ change 10 (1.5 m, not 6 m), every large surface reads within 3.9% at seed 1 but 
 +6.6%, +6.2% and +12.8% at seeds 1 to 4 (+3.0% to +17.2% while a patch over a wall's top joined
 its two rooms, change 11). The bounds held on each surface are the figures
 measured, rounded up: 4% at production, 10% at the defaults (an inner wall read -6.9% at seed 1
-with the 6 m patches). Where the rays ended is checked too (report.json's counts): the front faces struck that took no light, other
-than through a sealed thin gap, are at most a bound (PRESETS) of the gather's and of the form
-factors' rays.
+with the 6 m patches). Where the rays ended is checked too (report.json's counts): the front faces
+in the open struck that took no light (not through a sealed thin gap, not inside geometry) are at
+most a bound (PRESETS) of the gather's and of the form factors' rays.
 
 usage: interior_surfaces.py RADBAKE CORPUS_DIR OUT_DIR REFERENCE_CSV
 """
@@ -35,17 +35,18 @@ import re
 import subprocess
 import sys
 
-# Front faces struck that took no light, as shares of each kind of ray (not counting sealed thin
-# gaps, which keep their light by design). Before issue 57, production's gather 1.65% and form
-# factors 1.87%, the defaults' form factors 4.8%; since a sample of a nearby part in sight stands
-# for a hit that its own chart has none for (nearby_samples.h), 0.155%, 0.186% and 0.49% (the
-# defaults send more of their few form-factor rays from the bright patches, the sunlit frames,
-# where most are lost), and with patches within the mean free path the defaults' 0.29%. Issue 57
-# asks 0.2%, held here at production; the defaults' form factors are held to what they measure,
-# rounded up.
+# Front faces in the open struck that took no light, as shares of each kind of ray: not counting
+# sealed thin gaps, which keep their light by design, nor hits inside geometry (a point that sees
+# back faces in half its hemisphere, the test that buries texels: the inside of the bed's stacked
+# boards, of the fireplace, the wedge under the eaves), which the path tracer finds dark as well.
+# Before issue 57, production's gather 1.65% and form factors 1.87%, the defaults' form factors
+# 4.8%; since a sample of a nearby part in sight stands for a hit that its own chart has none for
+# (nearby_samples.h), 0.155%, 0.186% and 0.49%, and with patches within the mean free path the
+# defaults' 0.29%, of which 0.21 points inside geometry: counted apart, the defaults' gather 0.043%
+# and form factors 0.074%. Issue 57 asks 0.2%, held here for both.
 # (preset options, bound on each interior surface of at least 10 m2, bound on the interior's
 # light, bound on the gather's rays lost, on the form factors')
-PRESETS = [(["--quality", "production"], 0.04, 0.015, 0.002, 0.002), ([], 0.10, 0.025, 0.002, 0.003)]
+PRESETS = [(["--quality", "production"], 0.04, 0.015, 0.002, 0.002), ([], 0.10, 0.025, 0.002, 0.002)]
 LARGEST_SURFACES_M2 = 10.0
 
 
@@ -101,8 +102,10 @@ def main():
                                 f"past {surface_bound:.0%} + {noise:.2%}")
         for kind, most in zip(("gather_rays", "form_factor_rays"), most_lost):
             fates = report["counts"][kind]
-            lost = fates["front_face_took_none"] - fates["sealed_gap"]
-            print(f"  {kind}: front faces that took no light {lost:.3%} (sealed gaps besides: {fates['sealed_gap']:.3%})")
+            closed = fates["sealed_gap"] + fates["inside_geometry"]
+            lost = fates["front_face_took_none"] - closed
+            print(f"  {kind}: front faces in the open that took no light {lost:.3%} (besides, in sealed gaps "
+                  f"{fates['sealed_gap']:.3%}, inside geometry {fates['inside_geometry']:.3%})")
             if lost > most:
                 failures.append(f"{label}: {lost:.3%} of the {kind.replace('_', ' ')} struck a front face and took "
                                 f"no light, past {most:.1%}")

@@ -60,6 +60,29 @@ TEST(NearbySamples, NoSampleOutsideAClosedBoxStandsForItsInside) {
   EXPECT_TRUE(standing.fate == RayFate::BuriedElement || standing.fate == RayFate::OtherSide) << int(standing.fate);
 }
 
+// A board inside a closed box (the FZK-Haus's bed is boards stacked so): a point on the board's
+// top looks up at the box's lid from inside, a back face. A ray that strikes it there takes no light
+// and counts as struck inside geometry, with the closed spaces, not with the front faces in the open
+// that no element stood for.
+TEST(NearbySamples, AFrontFaceInsideAClosedBoxCountsAsInsideGeometry) {
+  Scene scene;
+  const int grey = test::add_material(scene, {0.5f, 0.5f, 0.5f});
+  test::add_quad(scene, {0, 0, 0}, {0, 0, 2}, {2, 0, 0}, grey, "floor");
+  test::add_box(scene, {0.5f, 0.3f, 0.5f}, {1.5f, 0.5f, 1.5f}, false, grey, "case");
+  test::add_box(scene, {0.6f, 0.35f, 0.6f}, {1.4f, 0.45f, 1.4f}, false, grey, "board");
+  const auto placed = test::placed_elements(scene, test::coarse_atlas());
+  uint32_t struck = 0;
+  // From the gap between the board and the lid, down onto the board's top.
+  const HitElement inside = standing_for_hit(*placed, {1.0f, 0.47f, 1.0f}, {0, -1, 0}, &struck);
+  EXPECT_EQ(struck, 10u) << "the ray should strike the board's top (instances: floor, case's six faces, board's)";
+  EXPECT_LT(inside.element, 0);
+  EXPECT_EQ(inside.fate, RayFate::InsideGeometry) << int(inside.fate);
+  // The floor beside the case, struck from the room, has its own element.
+  const HitElement open = standing_for_hit(*placed, {1.8f, 1.0f, 1.0f}, {0, -1, 0}, &struck);
+  EXPECT_EQ(struck, 0u);
+  EXPECT_GE(open.element, 0) << int(open.fate);
+}
+
 TEST(NearbySamples, NearestFirstWithinTheRadius) {
   const auto placed = block_on_a_floor(false);
   const Elements& e = placed->elements;
