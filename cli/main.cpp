@@ -1,5 +1,5 @@
-// radbake: a thin shell over the pipeline in DESIGN.md. Parse, load, unwrap, bake, write; or
-// compare two bakes (cli/diff_command).
+// radbake: the command line over the pipeline of docs/hacking.md. Parse, load, unwrap, bake,
+// write; or compare two bakes (cli/diff_command).
 
 #include <chrono>
 #include <cstdio>

@@ -6,10 +6,10 @@ cornell_box/  The Cornell box from the published Cornell geometry (graphics.corn
               reflectances and its ceiling light.
 ferren/       After the Goral et al. (1984) demonstration: vertical boards, white on the side
               facing the viewer and brightly coloured on the back, lit from behind by a window.
-classroom/    A daylit classroom (issue 14's sample): 9 x 7 x 3 m, three windows in the south wall
+classroom/    A daylit classroom: 9 x 7 x 3 m, three windows in the south wall
               (+Z; north is -Z) glazed with a visible transmittance of 0.7, a 1 m overhang over
               them, twelve desks and a blackboard; no lamp: the sky and the sun light it.
-              classroom_no_overhang.gltf: the same without the overhang (issue 17's design variant).
+              classroom_no_overhang.gltf: the same without the overhang (a design variant for the year's metrics).
 study_room/   The accuracy study's interior (docs/accuracy.md): a 4 x 3 x 2.6 m room lit by a
               window and a ceiling lamp, a table casting a shadow, and a bookcase standing 2 cm
               from a wall (a narrow gap light must not leak through).

@@ -1,5 +1,5 @@
 // The bake pipeline over plain data: scene and atlas in, lightmap pages and vertex values out.
-// Each stage is its own function (see DESIGN.md); bake() runs them in order and times them. The
+// Each stage is its own function (docs/hacking.md); bake() runs them in order and times them. The
 // options are bake_options.h's, the results bake_result.h's.
 #pragma once
 

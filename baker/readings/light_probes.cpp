@@ -25,7 +25,7 @@ void add(ShL2& sh, const Rgb& value, Vec3 d) {
 
 // The emitting triangles, picked in proportion to area times their brightest emission. The path
 // tracer keeps a table like it of its own: it is the reference probes are tested against, and
-// shares nothing with the baker but the scene, the ray tracer and the lights (DESIGN.md).
+// shares nothing with the baker but the scene, the ray tracer and the lights.
 struct EmitterTable {
   std::vector<uint32_t> triangle;
   std::vector<double> cumulative;  // of the weights

@@ -15,7 +15,7 @@ namespace radbake {
 // hit's side, the texel keeps it. What stands between is looked for past the hit's own chart's
 // steps and corners (sees_within_texel): a window frame's stepped profile at 19 cm texels hid
 // every sample from the faces round it, and the sunlit frames' light was missing from the
-// FZK-Haus's rooms at every bounce (issue 57). A buried texel passes its hits to a neighbour as
+// FZK-Haus's rooms at every bounce. A buried texel passes its hits to a neighbour as
 // well, two texels out at most, and where its chart has none, a sample of another part in sight of
 // the hit, four texels out at most, stands for it (nearby_samples.h).
 //

@@ -63,7 +63,7 @@ namespace {
 // to whatever clamp holds them (outer faces' factors 47 at the median, the ground's down to
 // 0.016). The ground's exchange with a room it lights through a window went down with them: a
 // room lit through a window read 6% to 17% darker than the path tracer (bench/window_room), and
-// the FZK-Haus's rooms 1.2% (issue 57).
+// the FZK-Haus's rooms 1.2%.
 
 // One half of A_p F_pq or of A_q F_qp, on row p of the symmetric exchange matrix G.
 struct Exchange {

@@ -1,4 +1,4 @@
-"""The display file in plain Blender: File > Import glTF, no add-on, a short render (issue 12).
+"""The display file in plain Blender: File > Import glTF, no add-on, a short render.
 
   blender -b --factory-startup --python-exit-code 1 --python tests/blender/test_display_import.py -- \
       RADBAKE_BINARY SOURCE_DIR

@@ -1,4 +1,4 @@
-// The analysis files from the command line (issue 14): sensors from a CSV and on a work plane,
+// The analysis files from the command line: sensors from a CSV and on a work plane,
 // their readings as CSV and heat maps, daylight factors, false-colour pages, and the statistics in
 // report.json.
 #include <gtest/gtest.h>
@@ -101,7 +101,7 @@ TEST(AnalysisCli, TheDaylightFactorLeavesTheScenesOwnLightsOut) {
   EXPECT_GT(lamp, 0.5 * sky);  // the lamp is no small part: leaving it in would show
 }
 
-// A byte-order mark, comments and one header before the first point are skipped (issue 30: a
+// A byte-order mark, comments and one header before the first point are skipped (a
 // comment before the header was refused).
 TEST(AnalysisCli, SensorsFromACsvFileFaceTheWayTheyAreTold) {
   const std::string csv = test::write_text_file("analysis_sensors.csv",
@@ -186,10 +186,10 @@ std::vector<std::vector<double>> classroom_readings(const std::string& case_name
   return r.status == 0 ? csv_rows(out + "/sensors.csv") : std::vector<std::vector<double>>{};
 }
 
-// At the defaults, the classroom's daylight factors against the path tracer's (issue 30): whole
+// At the defaults, the classroom's daylight factors against the path tracer's: whole
 // paths from each point, 2^20 of them, sharing nothing with the sensors' sampling
 // (tests/fixtures/classroom_daylight_reference.csv, ./dev daylight-reference; 0.4% noise per point).
-// The issue asks RMS within 2% and every point within 6%. And the noise each reading states must
+// The bounds: RMS within 2% and every point within 6%. And the noise each reading states must
 // be honest: a point's error against the reference over both standard errors would scatter as a
 // standard normal deviate if they were all there is. They leave out the bake's own texel noise and
 // bias (shared by every batch of a point's rays), so the scatter is wider: measured RMS 1.64 (the

@@ -1,4 +1,4 @@
-// A year of daylight from the command line (issue 17): `radbake bake --weather` on the classroom
+// A year of daylight from the command line: `radbake bake --weather` on the classroom
 // writes the hourly series, each sensor's metrics and a report that agree with each other.
 #include <gtest/gtest.h>
 

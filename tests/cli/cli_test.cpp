@@ -501,7 +501,8 @@ TEST_P(Validator, SampleOutputHasNoErrors) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Samples, Validator, ::testing::Values("cornell_box", "ferren", "classroom"));
+INSTANTIATE_TEST_SUITE_P(Samples, Validator, ::testing::Values("cornell_box", "ferren", "classroom"),
+                         [](const ::testing::TestParamInfo<const char*>& info) { return std::string(info.param); });
 
 }  // namespace
 }  // namespace radbake

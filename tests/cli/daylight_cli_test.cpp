@@ -1,4 +1,4 @@
-// Daylight from the command line (issue 14): a sky and a sun placed by a site and a moment light
+// Daylight from the command line: a sky and a sun placed by a site and a moment light
 // scenes that have no lamp, in lux, and report.json says what the sky and the sun were.
 #include <gtest/gtest.h>
 

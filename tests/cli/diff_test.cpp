@@ -138,7 +138,7 @@ TEST_P(DiffBadInput, ExitsTwoWithOneErrorLine) {
       {"page_size", [&] { return a + " " + bake_folder("diff_bad_size", {{16, 100}}); }},
       {"page_count", [&] { return a + " " + bake_folder("diff_bad_count", {{8, 100}, {8, 100}}); }},
       {"quantity", [&] { return a + " " + bake_folder("diff_bad_other_quantity", {{8, 100}}, "radiosity", "lm/m2"); }},
-      // Issue 32, point 3: each of these took diff down (std::bad_alloc) or hung it.
+      // Each of these once took diff down (std::bad_alloc) or hung it.
       {"huge_header", [&] { return a + " " + page_claiming(a, parent, 65536, 65536); }},
       {"dev_zero", [&] { return a + " /dev/zero"; }},
       {"fifo", [&] { return a + " " + test::make_fifo(parent + "/pipe.exr"); }},

@@ -1,4 +1,4 @@
-// `radbake bake --directional sh|dominant --probes` (issue 19): the files, what the glTF says of
+// `radbake bake --directional sh|dominant --probes`: the files, what the glTF says of
 // them, and that the packed PNG pages decode to the EXR pages' values.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Bakes across processes and machines (issue 18, docs/distributed.md): under mpirun with 1 to 4
+// Bakes across processes and machines (docs/distributed.md): under mpirun with 1 to 4
 // ranks, resumed after being killed, and as slices joined by radbake merge, radbake writes the
 // same files as one process baking alone, bit for bit (the EXR pages compared by pixel: their
 // header holds the time they were written). A checkpoint of another bake is refused.
@@ -159,7 +159,7 @@ TEST(Distributed, ACheckpointOfAnotherBakeOrADamagedOneIsRefused) {
   std::ofstream(stage, std::ios::binary) << bytes;
   test::expect_one_line_refusal(radbake("bake " + kCornell + " -o " + dir + "/c" + kOptions + " --checkpoint " + dir + "/ckpt --resume"),
                                 "damaged: its checksum does not match", dir + "/c");
-  // Headers whose two sizes sum, wrapping past 2^64, to the bytes that follow them (issue 32): a
+  // Headers whose two sizes sum, wrapping past 2^64, to the bytes that follow them: a
   // name of 0xffffffff bytes, a payload of 2^64 - 1000. Refused before anything is allocated.
   const uint64_t body = bytes.size() - 40;  // after the 40-byte header
   const auto forged = [&](uint32_t name_size, uint64_t payload_size, const std::string& out) {
@@ -180,7 +180,7 @@ TEST(Distributed, ACheckpointOfAnotherBakeOrADamagedOneIsRefused) {
   EXPECT_FALSE(fs::exists(dir + "/d"));
 }
 
-// A FIFO where a checkpoint's file should be (issue 32, point 4): opened for reading, it would wait
+// A FIFO where a checkpoint's file should be: opened for reading, it would wait
 // for a writer for ever. --resume and merge refuse it in one line instead (timeout 60 turns a hang
 // into status 124).
 TEST(Distributed, ACheckpointFileThatIsAFifoIsRefusedNotWaitedOn) {

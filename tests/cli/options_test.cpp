@@ -1,4 +1,4 @@
-// Hostile option values and inputs (issue 11): each is refused before anything is read or
+// Hostile option values and inputs: each is refused before anything is read or
 // written, with one `radbake: error:` line that names the option and what it allows, exit 2.
 #include <gtest/gtest.h>
 #include <sys/stat.h>

@@ -1,4 +1,4 @@
-// The output folder under real use (issue 11): bakes that die, are interrupted, run two at once,
+// The output folder under real use: bakes that die, are interrupted, run two at once,
 // or find a user's files in OUTDIR. Each runs the radbake binary as a pipeline would.
 #include <gtest/gtest.h>
 #include <signal.h>
@@ -217,7 +217,7 @@ TEST(Interrupt, SigtermDuringLightmapUvGenerationEndsTheBakeAndLeavesNothing) {
   EXPECT_TRUE(leftovers(parent).empty());
 }
 
-// Issue 32, point 7: a signal in radbake's first moments ended it by the signal's default action,
+// A signal in radbake's first moments once ended it by the signal's default action,
 // with no "cancelled" line: its 272 shared libraries take about 0.2 s to start, and the signals
 // were blocked only when main began. They are now blocked before any library starts. A library
 // preloaded to take 2 s to start (tests/support/slow_library_start.cpp) makes that moment long
@@ -241,7 +241,7 @@ TEST(Interrupt, ASignalWhileTheLibrariesStartEndsWithTheCancelledLine) {
   EXPECT_TRUE(leftovers(parent).empty());
 }
 
-// Issue 32, point 6: a full disk with --debug-dumps ended the bake with exit status 1 and
+// A full disk with --debug-dumps once ended the bake with exit status 1 and
 // OpenEXR's words. A bake is written into disks of a twelfth, two twelfths ... of the space its
 // output takes (tmpfs in a mount namespace of the test's own, `unshare`): each either writes
 // everything or says in one line which file could not be written because the disk is full (named

@@ -1,4 +1,4 @@
-// Issue 32, point 5: options that were accepted and then ran for ever with nothing said. Each stage
+// Options that were once accepted and then ran for ever with nothing said. Each stage
 // that scales with an option is now estimated before a ray is cast and refused past --max-rays
 // (default 10^10, about an hour on 2 cores) in one line naming the option; sensors far outside the
 // scene are counted in a warning. Every refusal here comes before the bake starts, so each command
@@ -42,7 +42,7 @@ struct Reproducer {
 
 class RayBudget : public ::testing::TestWithParam<Reproducer> {};
 
-TEST_P(RayBudget, RefusesTheIssuesReproducerBeforeARayIsCast) {
+TEST_P(RayBudget, RefusesWhatWouldRunForEverBeforeARayIsCast) {
   const std::string folder = test::fresh_folder("ray_budget_" + GetParam().name);
   std::string options = GetParam().options;
   const size_t at = options.find("SENSORS");
@@ -54,7 +54,7 @@ TEST_P(RayBudget, RefusesTheIssuesReproducerBeforeARayIsCast) {
 }
 
 INSTANTIATE_TEST_SUITE_P(
-    Issue32, RayBudget,
+    Options, RayBudget,
     ::testing::Values(
         // Estimated 7.2e10: 1,374 patches x 3 x 4096^2 pixels.
         Reproducer{"hemicube_4096", "--form-factors hemicube --hemicube-resolution 4096",

@@ -1,4 +1,4 @@
-// Baking radbake's own output again gives what baking the original gave (issue 12, item 7): the
+// Baking radbake's own output again gives what baking the original gave : the
 // same pages, the same light. The output's TEXCOORD_1 is kept on one page as it was laid out (not a
 // page per mesh), its COLOR_0 of baked light is not read as a base colour, and its back-face
 // primitives are left out and made again.

@@ -1,4 +1,4 @@
-// Issue 32, points 3 and 4: every file radbake reads must be a regular file, checked without
+// Every file radbake reads must be a regular file, checked without
 // blocking before a byte is read. Opening a FIFO to read waits for a writer for ever, and
 // /dev/zero never ends: each reader is given one (or a link to one) and must refuse it in one line.
 // Every command runs under `timeout 60`, so a reader that blocks fails the test (status 124)

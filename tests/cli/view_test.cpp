@@ -1,4 +1,4 @@
-// `radbake view` (issue 15) against the real server: it serves the page, three.js and the output
+// `radbake view` against the real server: it serves the page, three.js and the output
 // folders' files and nothing else, on 127.0.0.1 only, and the page in headless Chromium reads the
 // bake's EXR where it is clicked.
 #include <gtest/gtest.h>
@@ -217,7 +217,7 @@ uint64_t status_kib(pid_t pid, const std::string& field) {
   return 0;
 }
 
-// Issue 32, point 2: a request with 200 ranges "0-" of a 5 MB file came back as 1 GB. Now a request
+// A request with 200 ranges "0-" of a 5 MB file came back as 1 GB. Now a request
 // may ask for one range inside the file (cpp-httplib 0.11's multipart answers are wrong besides);
 // anything else is refused with 416, no body.
 TEST(View, ARequestMayAskForOneRangeAndNoMore) {
@@ -251,7 +251,7 @@ TEST(View, ARequestMayAskForOneRangeAndNoMore) {
   }
 }
 
-// Issue 32, point 2: a hard link made in the folder to a file elsewhere was served (symbolic links
+// A hard link made in the folder to a file elsewhere was served (symbolic links
 // were already refused); a FIFO must not hold a request.
 TEST(View, AFileWithAnotherNameElsewhereOrThatIsNotAFileIsNotServed) {
   const std::string folder = cornell_bake("view_links");
@@ -273,7 +273,7 @@ TEST(View, AFileWithAnotherNameElsewhereOrThatIsNotAFileIsNotServed) {
   EXPECT_EQ(client.Get("/a/cornell_box.gltf")->status, 200);
 }
 
-// Issue 32, point 2: 40 connections that each sent a header line every 2 s stalled everyone
+// 40 connections that each sent a header line every 2 s stalled everyone
 // else's requests for 12-25 s. Now each is served on its own worker, so a request from elsewhere
 // is answered while all 40 are still open, and the server closes each when its header's deadline
 // (8 s) passes.
@@ -309,7 +309,7 @@ TEST(View, SlowClientsHoldNobodyElseUpAndAreCutOff) {
   EXPECT_EQ(closed, 40);
 }
 
-// Issue 32, point 2: one GET of a 2 GB file took the server from 154 MB to 4.3 GB. Files are now
+// One GET of a 2 GB file took the server from 154 MB to 4.3 GB. Files are now
 // read in 64 KiB chunks as each connection takes them, and at most 128 connections are served at
 // once: 200 clients that each fetch a 16 MB file grow the server's peak memory by a few MB, not
 // by what they fetch (3.2 GB in all).
@@ -396,7 +396,7 @@ TEST(View, AClickReadsTheIlluminanceTheExrHoldsThere) {
     // The reading is photopic, as every lux radbake prints (on the red wall a third of the RGB
     // mean would be 10% off).
     const double exr = photopic(page.texels[size_t(y) * size_t(page.width) + size_t(x)]);
-    // 1%, as the issue asks; both read the same half floats (OpenImageIO here, three.js's
+    // 1%: both read the same half floats (OpenImageIO here, three.js's
     // EXRLoader in the page), so only a wrong texel or a wrong page would differ.
     EXPECT_NEAR(double(pick["value"]), exr, 0.01 * exr) << pick.dump();
     EXPECT_GT(exr, 1.0) << pick.dump();  // a lit texel, not padding
@@ -478,7 +478,7 @@ std::string middle_surface(const nlohmann::json& result) {
   return pick.is_null() ? "nothing" : pick["surface"].get<std::string>();
 }
 
-// The first view (issue 31): the scene's own camera (the Cornell box's); for a scene without one
+// The first view: the scene's own camera (the Cornell box's); for a scene without one
 // (the classroom), the view radbake chose for the display file, inside the largest room.
 TEST(View, TheFirstViewIsTheScenesCameraElseInsideItsLargestRoom) {
   const std::string cornell = cornell_bake("view_first_cornell");

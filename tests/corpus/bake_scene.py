@@ -12,7 +12,7 @@ import subprocess
 import sys
 
 # The share of the page the charts cover, at least: measured at the defaults (December 2026) less
-# 0.02 for packing changes. Issue 29 asks 70% on every scene, not met: scenes of thousands of
+# 0.02 for packing changes. 70% of every scene is the aim, not met: scenes of thousands of
 # charts of a few texels each (the house's 1,775 after pieces hinge onto the charts they touch, the
 # engine's 1,848, the arena's 2,486) lose 40% of the page to the 2-texel padding round each; the
 # others, of larger organic charts, to the packer (61-67%).
@@ -21,7 +21,7 @@ LEAST_UTILISATION = {"fzk_haus": 0.53, "cylinder_engine": 0.44, "teapots": 0.62,
 MOST_FACE_STRETCH = 4.0
 # |emitted - absorbed - escaped - lost| / emitted, at most: 1% (measured 0.04-0.53%), but the duck:
 # white (its TGA texture cannot be kept), it absorbs almost nothing, so every error in its
-# irradiance shows; measured -7.6% (open, issue 29's note).
+# irradiance shows; measured -7.6%.
 MOST_BALANCE_ERROR = {"duck": 0.10}
 def main():
     radbake, validator, corpus, name, out = sys.argv[1:6]

@@ -1,31 +1,31 @@
-# The real-scene corpus (samples/corpus, issue 29): made from Debian's assimp-testmodels and
+# The real-scene corpus (samples/corpus): made from Debian's assimp-testmodels and
 # OpenArena packages by samples/corpus/make_corpus.py into build/corpus (fixture corpus.make),
 # each scene baked with the defaults and checked (tests/corpus/bake_scene.py: validator, atlas,
 # energy balance, clipping), then all seen in three.js, stock and with the plugin
 # (tests/corpus/three.test.mjs); the house's daylight run (tests/corpus/daylight_scene.py) and its
 # surfaces against the path tracer (tests/corpus/interior_surfaces.py).
-# `ctest -L corpus`.
+# `ctest -L corpus`; all but the three.js one are also labelled slow.
 set(RADBAKE_CORPUS_DIR ${CMAKE_BINARY_DIR}/corpus)
 set(RADBAKE_CORPUS_BAKES ${CMAKE_BINARY_DIR}/corpus_bakes)
 add_test(NAME corpus.make COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/samples/corpus/make_corpus.py ${RADBAKE_CORPUS_DIR})
-set_tests_properties(corpus.make PROPERTIES FIXTURES_SETUP corpus_scenes LABELS corpus TIMEOUT ${timeout_300})
+set_tests_properties(corpus.make PROPERTIES FIXTURES_SETUP corpus_scenes LABELS "slow;corpus" TIMEOUT ${timeout_300})
 foreach(scene fzk_haus cylinder_engine teapots milk_truck duck arena)
   add_test(NAME corpus.bake.${scene}
     COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/corpus/bake_scene.py $<TARGET_FILE:radbake>
             ${CMAKE_CURRENT_SOURCE_DIR}/tools/validate_gltf.mjs ${RADBAKE_CORPUS_DIR} ${scene} ${RADBAKE_CORPUS_BAKES})
   set_tests_properties(corpus.bake.${scene} PROPERTIES FIXTURES_REQUIRED corpus_scenes FIXTURES_SETUP corpus_bakes
-                       LABELS corpus TIMEOUT ${timeout_300})
+                       LABELS "slow;corpus" TIMEOUT ${timeout_300})
 endforeach()
 add_test(NAME corpus.three
   COMMAND node ${CMAKE_CURRENT_SOURCE_DIR}/corpus/three.test.mjs --corpus ${RADBAKE_CORPUS_DIR}
           --bakes ${RADBAKE_CORPUS_BAKES} --work ${CMAKE_BINARY_DIR}/corpus_shots)
-set_tests_properties(corpus.three PROPERTIES FIXTURES_REQUIRED "corpus_scenes;corpus_bakes" LABELS "corpus;web" TIMEOUT ${timeout_600})
+set_tests_properties(corpus.three PROPERTIES FIXTURES_REQUIRED "corpus_scenes;corpus_bakes" LABELS "client;corpus;web" TIMEOUT ${timeout_600})
 add_test(NAME corpus.daylight.fzk_haus
   COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/corpus/daylight_scene.py $<TARGET_FILE:radbake>
           ${RADBAKE_CORPUS_DIR} fzk_haus ${RADBAKE_CORPUS_BAKES} 2)
-set_tests_properties(corpus.daylight.fzk_haus PROPERTIES FIXTURES_REQUIRED corpus_scenes LABELS corpus TIMEOUT ${timeout_600})
-# The house's rooms surface by surface against its stored path-traced reference (issue 57).
+set_tests_properties(corpus.daylight.fzk_haus PROPERTIES FIXTURES_REQUIRED corpus_scenes LABELS "slow;corpus" TIMEOUT ${timeout_600})
+# The house's rooms surface by surface against its stored path-traced reference.
 add_test(NAME corpus.surfaces.fzk_haus
   COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/corpus/interior_surfaces.py $<TARGET_FILE:radbake>
           ${RADBAKE_CORPUS_DIR} ${RADBAKE_CORPUS_BAKES} ${CMAKE_CURRENT_SOURCE_DIR}/fixtures/fzk_haus_surfaces_reference.csv)
-set_tests_properties(corpus.surfaces.fzk_haus PROPERTIES FIXTURES_REQUIRED corpus_scenes LABELS corpus TIMEOUT ${timeout_600})
+set_tests_properties(corpus.surfaces.fzk_haus PROPERTIES FIXTURES_REQUIRED corpus_scenes LABELS "slow;corpus" TIMEOUT ${timeout_600})

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""A corpus building's daylight run, as issue 29 gave it (`--sky cie-overcast --daylight-factor
+"""A corpus building's daylight run (`--sky cie-overcast --daylight-factor
 --work-plane`, nothing else): a map and a statistics block per storey, a row per room in
 work_plane_rooms.csv and report.json, and no point outdoors. Outdoors is checked against the
 building's own walls (corpus.json's walls_bounds_m, the box of the nodes named as walls): every

@@ -26,8 +26,8 @@ const SIZE = 256;
 const BACKGROUND = [1, 0, 1]; // magenta: no baked surface of the corpus shows it
 // Bounds: the share of the model's pixels at 254 or more in some channel: the 2% of what the display
 // camera sees that the exposure lets clip, and 1% for what its grid of 128 rays a side does not see
-// as the rendered pixels do (bilinear filtering, the pre-lit page's detail); pure white was 78-81%
-// of the engine before issue 29. The median pixel's linear luminance: within two stops of the key
+// as the rendered pixels do (bilinear filtering, the pre-lit page's detail); pure white once
+// covered 78-81% of the engine. The median pixel's linear luminance: within two stops of the key
 // 0.18 (where highlights limit the exposure, the median sits below the key).
 // The plugin shows base colour textures at their own resolution, finer than the pre-lit pages the
 // meter reads, so their brightest texels clip more: 1% more allowed (the arena: 3.6% against 1.9%).

@@ -1,4 +1,4 @@
-// Sky luminance distributions against the values the issue gives for ISO 15469's standard skies
+// Sky luminance distributions against published values for ISO 15469's standard skies
 // and the closed forms of the uniform and traditional overcast skies.
 #include <gtest/gtest.h>
 

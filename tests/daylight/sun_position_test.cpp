@@ -12,7 +12,7 @@ TEST(SunPosition, MatchesTheSpaReportsTestVector) {
   const SunPosition sun = sun_position(test::spa_test_site());
   RecordProperty("zenith", std::to_string(sun.zenith));
   RecordProperty("azimuth", std::to_string(sun.azimuth));
-  // SPA: zenith 50.111622, azimuth 194.340241 degrees; the bound is 0.01 degree.
+  // SPA: zenith 50.111622, azimuth 194.340241 degrees; the bound is 0.01 degree.
   // Measured: 50.112564 and 194.334690 (0.0009 and 0.0056 degree off: Meeus' short series).
   EXPECT_NEAR(sun.zenith, test::kSpaZenith, 0.01);
   EXPECT_NEAR(sun.azimuth, test::kSpaAzimuth, 0.01);

@@ -66,6 +66,23 @@ TEST(Docs, EveryCommandInTheReadmeAndDocsRunsAsWritten) {
   for (const char* command : {"  sample)", "  test)", "  bench)", "  asan)"}) EXPECT_NE(dev.find(command), std::string::npos);
 }
 
+// `./dev help` prints the "#:" lines of ./dev, one per command: every command ./dev runs is there,
+// and nothing that it does not run.
+TEST(Docs, DevHelpListsEveryCommandOnceAndNothingElse) {
+  std::stringstream text(test::slurp(test::source_path("dev")));
+  std::multiset<std::string> listed;
+  std::set<std::string> handled;
+  const std::regex help_line("^#: ([a-z-]+) .*"), case_label("^  ([a-z-]+)\\)$");
+  std::smatch m;
+  for (std::string line; std::getline(text, line);) {
+    if (std::regex_match(line, m, help_line)) listed.insert(m[1]);
+    if (std::regex_match(line, m, case_label)) handled.insert(m[1]);
+  }
+  EXPECT_GE(handled.size(), 15u);
+  EXPECT_EQ(std::set<std::string>(listed.begin(), listed.end()), handled);
+  EXPECT_EQ(listed.size(), handled.size()) << "a command listed twice";
+}
+
 // The README's map: its folders, bottom first.
 std::vector<std::string> map_of_the_house() {
   std::stringstream text(test::slurp(test::source_path("README.md")));
@@ -146,6 +163,26 @@ TEST(Docs, EveryIncludePointsDownTheMap) {
       EXPECT_LE(to, from) << file << " includes " << m[1] << " from a folder above its own";
       ++checked;
     }
+  }
+  EXPECT_GT(checked, 300u);
+}
+
+// Code, tests, build files and scripts say what was measured or what broke, not which issue asked:
+// an issue's number means nothing to a reader of the repository. docs/ may tell the history.
+TEST(Docs, NoSourceCitesAnIssueByNumber) {
+  const std::regex issue_number("[Ii]ssues? ?#?[0-9]+|Issue[0-9]+");
+  size_t checked = 0;
+  for (const std::string& file : files_of_the_house()) {
+    const std::string ext = fs::path(file).extension().string();
+    static const std::set<std::string> source = {".cpp", ".h", ".in", ".py", ".mjs", ".js", ".html", ".cmake", ".txt", ""};
+    if (file.rfind("docs/", 0) == 0 || !source.count(ext)) continue;
+    std::stringstream text(test::slurp(test::source_path(file)));
+    size_t line_number = 0;
+    for (std::string line; std::getline(text, line);) {
+      ++line_number;
+      EXPECT_FALSE(std::regex_search(line, issue_number)) << file << ":" << line_number << ": " << line;
+    }
+    ++checked;
   }
   EXPECT_GT(checked, 300u);
 }

@@ -15,7 +15,7 @@ Two kinds of mutants:
 
 Files the fuzzer found live in tests/fuzz/findings/ and are never touched here.
 
-The targeted kinds from issue 29 (vertex_values, material_range, morph_targets, image_bytes, skin_use,
+The targeted kinds (vertex_values, material_range, morph_targets, image_bytes, skin_use,
 texture_webp) hold what radbake accepts but used to write invalid glTF from: bad vertex data, extension
 values out of range, morph targets, images that are no PNG or JPEG, skins on unskinned meshes and
 EXT_texture_webp naming other images. Their new data goes in data URIs, and their image files
@@ -35,7 +35,7 @@ ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
 OUT = os.path.join(HERE, "corpus")
 # The other fuzz targets' seeds, beside these and left alone (./dev fuzz: checkpoint_fuzzer, weather_fuzzer).
 OTHER_TARGETS_SEEDS = ("checkpoint.", "weather.")
-SEED = 11  # issue 11
+SEED = 11  # any fixed seed: the corpus is the same on every machine
 
 SOURCES = [
     "samples/cornell_box/cornell_box.gltf",
@@ -392,7 +392,7 @@ def bad_structure(rng, doc):
     return f"structure: {how}"
 
 
-# --- what radbake accepts and once wrote invalid glTF from (issue 29) ------------------------------
+# --- what radbake accepts and once wrote invalid glTF from ---------------------------------------
 
 def png_bytes(width, height, rgb):
     """A PNG of 8-bit RGB pixels, rows top to bottom."""
@@ -647,7 +647,7 @@ TARGETED = {
     "image_bytes": image_bytes, "skin_use": skin_use, "texture_webp": texture_webp,
     "specular_glossiness": specular_glossiness, "png_chunks": png_chunks,
 }
-TARGETED_PER_SOURCE = 2  # of each kind, but for issue 29's, which have more variants each
+TARGETED_PER_SOURCE = 2  # of each kind, but for the targeted kinds, which have more variants each
 PER_SOURCE = {"vertex_values": 4, "material_range": 3, "morph_targets": 3, "image_bytes": 3, "skin_use": 2,
               "texture_webp": 3, "specular_glossiness": 3, "png_chunks": 3}
 

@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
-"""Bakes every file of the hostile-input corpus and holds radbake to issue 11's promise:
+"""Bakes every file of the hostile-input corpus and holds radbake to its promise on bad input:
 each file either exits 0 with outputs the Khronos glTF-Validator finds no error in, or exits 2
 with one line on stderr and writes nothing. Exit 1, a crash (a signal, a sanitizer report) or a
 run past the timeout is a failure, listed by file with its exit status and stderr's first line.
-Both files radbake writes are validated (NAME.gltf and NAME_display.glb), and issue 29's warnings
+Both files radbake writes are validated (NAME.gltf and NAME_display.glb), and the validator's warnings
 (WATCHED_WARNINGS: what radbake repairs or drops) fail a file as errors do. The summary counts the
 files whose every output validates clean: no error and no warning of any code.
 
@@ -94,7 +94,7 @@ def main():
                     lines = stderr.splitlines()
                     if len(lines) != 1 or not lines[0].startswith("radbake: error: "):
                         failures.append(f"{name}: exit 2 with {len(lines)} lines on stderr: {first_lines(stderr)}")
-                    elif "tinygltf" in lines[0]:  # issue 32: a refusal is in radbake's words, at a JSON pointer
+                    elif "tinygltf" in lines[0]:  # a refusal is in radbake's words, at a JSON pointer
                         failures.append(f"{name}: refused in tinygltf's words: {first_lines(stderr)}")
                     elif os.path.exists(out):
                         failures.append(f"{name}: exit 2 but the output folder was written")

@@ -2,7 +2,7 @@
 // the light of the element standing for the point they hit, even where its own sample lies across
 // the surface's steps (element_for_hit looks past the steps of its own chart); a closed hollow
 // box's inside and a room behind a closed door must stay black. Looking for the nearest lit
-// element with no test of sight lit 5.3 m2 inside the FZK-Haus's closed cavities (issue 57).
+// element with no test of sight lit 5.3 m2 inside the FZK-Haus's closed cavities.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// Issue 11: a room whose ceiling and one wall are single double-sided faces, as Blender's
+// A room whose ceiling and one wall are single double-sided faces, as Blender's
 // Archimesh builds them (the ceiling one face, its normal up toward the roof), with the sun outside
 // shining in through a window and a lamp inside. Each face of a double-sided wall has texels of
 // its own (baker/surface/back_faces.h), so inside, the room must read what the same room built of

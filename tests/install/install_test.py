@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""radbake as a user installs it (issue 31): `cmake --install` into a fresh prefix, and the Debian
+"""radbake as a user installs it: `cmake --install` into a fresh prefix, and the Debian
 package `cpack -G DEB` makes, unpacked into a clean folder; from each, `radbake bake` the Cornell
 box and `radbake view` it in headless Chromium with no console error, its three.js served from the
 install's share/radbake. A radbake copied away from its share folder refuses `view` in one line.

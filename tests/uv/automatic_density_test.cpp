@@ -1,4 +1,4 @@
-// The automatic texel density (issue 13): a budget of texels over the scene's surface, so a plain
+// The automatic texel density: a budget of texels over the scene's surface, so a plain
 // room no longer fills a 1024 page with 828,000 texels; fewer when the budget does not fit one page.
 #include <gtest/gtest.h>
 

@@ -88,7 +88,7 @@ TEST(PageSize, TheDefaultBudgetGetsTheSmallestPowerOfTwoPageThatHoldsItFilled) {
     EXPECT_GE(budget_share(atlas), 1 / (std::sqrt(2.0) * step)) << name;
     EXPECT_LE(budget_share(atlas), 2 * step) << name;
     // Measured 69.3% (Cornell box), 81.9% (classroom), 87.4% (study room), each on 256 x 256. 65%
-    // leaves room for packing changes; issue 29 asks 70% of every corpus scene, not yet reached.
+    // leaves room for packing changes; 70% of every corpus scene is the aim, not yet reached.
     EXPECT_GE(atlas.stats.utilisation, 0.65) << name;
     // A smaller page: for a 2:1 page the square of its height, the next smaller shape; for a
     // square one the square of half its side (the 2:1 page between cannot be asked for alone).

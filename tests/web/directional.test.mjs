@@ -1,4 +1,4 @@
-// Directional lightmaps in three.js (issue 19): a floor whose normal map has stripes tilted toward
+// Directional lightmaps in three.js: a floor whose normal map has stripes tilted toward
 // and away from a low sun, baked with `--directional sh`, shows its stripes through the MOZ_lightmap
 // plugin (web/radbake-lightmap.js) and in the display file (NAME_display.glb, stock GLTFLoader), in
 // Debian's headless Chromium; baked without, it is flat in both.

@@ -2,7 +2,7 @@
 // faces keeps the colour the EXR gives at the UV it sees (within 5% + 1 sRGB code) and stays within
 // the range the near view of the same face shows, with the sampler as radbake wrote it (LINEAR, no
 // mipmaps). The same views with mipmaps forced on are measured and printed, not asserted: that is
-// what the sampler without mipmaps avoids (and what issue 12 measured, 106/255 on the green face).
+// what the sampler without mipmaps avoids (once measured at 106/255 on the green face).
 // usage: node tests/web/far_view.test.mjs --bake DIR --work DIR
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';

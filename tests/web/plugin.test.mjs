@@ -142,8 +142,8 @@ test('exposure: options.exposure wins; without display_exposure, pi / intensity'
 
 // The recipe as a user runs it: the gltf-transform CLI web/ pins, and the same version installed
 // apart from web/ as npm installs it anywhere (tests/tools/node_modules), run from a folder of its
-// own with the config from the build's share folder (as installed; docs/install.md). Before issue 31
-// the apart CLI kept MOZ_lightmap but pruned TEXCOORD_0 and TEXCOORD_1: the config's extension was
+// own with the config from the build's share folder (as installed; docs/install.md). Before the config
+// was built on the CLI's own core, the apart CLI kept MOZ_lightmap but pruned TEXCOORD_0 and TEXCOORD_1: the config's extension was
 // built on web/'s copy of @gltf-transform/core, not the CLI's.
 const share = path.resolve(process.argv[process.argv.indexOf('--share') + 1]);
 const recipes = [

@@ -82,7 +82,7 @@ export function expectations(bake, engineRender) {
 /**
  * Compares a displayed pixel with its expected linear display value, per channel, in linear display
  * units: |got − expected| ≤ 5% × expected + `codes` × (one 8-bit sRGB code at the expected value).
- * The 5% is the issue's bound on everything the pipeline could get wrong (exposure, intensity,
+ * The 5% bounds everything the pipeline could get wrong (exposure, intensity,
  * colour space, filtering, the viewer's shading); the code term bounds the rounding of the 8-bit
  * stages, which no viewer can avoid (a page PNG and the frame buffer: ±½ code each, so 1 code; it
  * matters for dark channels, where one code is more than 5%). Returns { ok, worst, detail }.

@@ -584,9 +584,9 @@ TEST(Cie171, Case5_9SkyComponentThroughARoofOpeningIsTheViewFactor) {
 //   5.12 the same glazed (Tables B.15 to B.20).
 // The report's points (its Figs. 15 and 20): A to F up the middle of the north wall (z = 0), 2.75 m
 // to 0.25 m high; G to N along the floor's centre line from that wall, 0.25 m to 3.75 m out; and for
-// the facade openings G' to N' on the ceiling over them. The tables are those CyclesCIEtest
-// transcribed (engine/cie171/test_cases_daylight.py, with notes in docs/CIE/NOTES.md and
-// IMPLEMENTATION_AUDIT.md); this geometry and its orientation are confirmed the way 5.3's are: the
+// the facade openings G' to N' on the ceiling over them. The tables are those the CyclesCIEtest
+// repository transcribed (its engine/cie171/test_cases_daylight.py, with notes in its
+// docs/CIE/NOTES.md and IMPLEMENTATION_AUDIT.md); this geometry and its orientation are confirmed the way 5.3's are: the
 // closed form below, for the 16 skies, gives the tables. Where a table departs from it, the test
 // names the entries and says why, and holds the bake to the closed form there.
 //

@@ -166,8 +166,8 @@ SkyLight sun_only(double zenith_degrees, double normal_lux) {
 }
 
 // The classroom's floor under the CIE overcast sky, baked twice with different seeds: each texel's
-// difference over sqrt(2) is one bake's noise, RMS over the floor relative to its mean. Issue 30
-// asks under 3% at the defaults for a heat map. Cosine-distributed rays alone measured 11.2%; half
+// difference over sqrt(2) is one bake's noise, RMS over the floor relative to its mean. A heat map
+// needs under 3% at the defaults. Cosine-distributed rays alone measured 11.2%; half
 // of them aimed at the panes by their area, 5.3%; three quarters aimed into the windows' solid
 // angles, each window chosen by what it could bring (sky_portals.h), 2.5%. Each bake states its
 // texels' sky noise (report.json).

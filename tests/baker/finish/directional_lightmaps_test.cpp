@@ -1,4 +1,4 @@
-// Directional lightmaps (baker/finish/directional_lightmaps.h, issue 19): the L1 pages reconstruct the
+// Directional lightmaps (baker/finish/directional_lightmaps.h): the L1 pages reconstruct the
 // irradiance for normals other than the surface's, from the same bake.
 #include <gtest/gtest.h>
 

@@ -72,7 +72,7 @@ TEST(NearField, MakesWhereSurfacesMeetTheFloorAsThePathTracerSees) {
   EXPECT_LT(with.rmse, 0.5 * without.rmse);
 }
 
-// Issue 13's bound: at the production preset, each contact region of the Cornell box (one 256
+// The bound: at the production preset, each contact region of the Cornell box (one 256
 // page, the CLI's automatic density, 43,000 texels) within 2% of the path tracer, which traces
 // only the regions' 600 texels so that it can afford 16,384 paths each.
 TEST(NearField, CornellContactRegionsAtProductionAreWithinTwoPercentOfThePathTracer) {

@@ -54,7 +54,7 @@ TEST(AnnualDaylight, CoefficientsMatchSingleHourBakesAtEverySensor) {
       const double reference = single_bake.sensor_lux[s], coefficients = annual.lux[h * sensors.size() + s];
       RecordProperty("hour " + std::to_string(h) + " sensor " + std::to_string(s),
                      std::to_string(coefficients) + " / " + std::to_string(reference));
-      // 2%: the issue's bound, for patches of sky and sun bins in place of the sky itself.
+      // 2%: the bound for patches of sky and sun bins in place of the sky itself.
       EXPECT_NEAR(coefficients, reference, 0.02 * reference) << "hour " << h << ", sensor " << s;
       EXPECT_GT(reference, 10.0) << "a sensor the daylight does not reach tests nothing";
     }
@@ -78,9 +78,9 @@ TEST(AnnualDaylight, CoefficientsMatchSingleHourBakesAtEverySensor) {
                  std::to_string(ours / theirs) + " " + std::to_string(median) + " " + std::to_string(p90));
   // Measured: 0.999, median 4.5%, 90th percentile 22%: texels along shadow edges, which the sun
   // bins blur (interpolated between up to 4 bins' centres, up to 2 degrees apart), and each side's
-  // own noise. Since issue 30 a single bake's texels aim half their sky rays at the windows, so
+  // own noise. Since sky rays were aimed at the windows (sky_portals.h) a single bake's texels aim half their sky rays at the windows, so
   // the two no longer cast the same rays and their noise no longer cancels here (with the bin the
-  // sun falls in, as before, 4.4% and 20%; before issue 30, sharing rays, 2.3% and 14%).
+  // sun falls in, as before, 4.4% and 20%; before, sharing rays, 2.3% and 14%).
   EXPECT_NEAR(ours / theirs, 1.0, 0.02);  // the scene's light over all lit texels
   EXPECT_LT(median, 0.06);
   EXPECT_LT(p90, 0.25);
@@ -91,8 +91,8 @@ TEST(AnnualDaylight, CoefficientsMatchSingleHourBakesAtEverySensor) {
 // patch on the north wall between 1.1 and 1.9 m up. Points of a work plane 0.25 and 0.5 m from that
 // wall get most of their light from the patch. The year's coefficients solve the sun at the
 // centres of 3-degree bins; taken from the bin's centre the patch moved by up to 9 cm and these
-// points read 4-22% off (issue 30). Interpolated between the bins around the hour's sun, they must
-// read as the single hour's bake does, within 3% (the issue's bound).
+// points read 4-22% off. Interpolated between the bins around the hour's sun, they must
+// read as the single hour's bake does, within 3%.
 TEST(AnnualDaylight, ASunPatchOnAWallMovesWithTheHoursSunNotItsBin) {
   Scene scene;
   const int grey = test::add_material(scene, {0.5f, 0.5f, 0.5f});

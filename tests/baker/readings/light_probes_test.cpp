@@ -1,4 +1,4 @@
-// Light probes (baker/readings/light_probes.h, issue 19) against the path tracer, the independent method of
+// Light probes (baker/readings/light_probes.h) against the path tracer, the independent method of
 // the accuracy study, at points in the air of the Cornell box: the same nine coefficients of the
 // light there, one from the bake, one from paths.
 #include <gtest/gtest.h>

@@ -77,7 +77,7 @@ TEST(Sensors, JustAboveAFloorTheyReadWhatTheFloorsTexelsReceive) {
   EXPECT_NEAR(r.sensor_lux[0], floor.x, 0.02 * floor.x);
 }
 
-// A meter reads the photopic part of coloured light (issue 30): a lamp of 100 cd whose colour is
+// A meter reads the photopic part of coloured light: a lamp of 100 cd whose colour is
 // pure red, green or blue in linear sRGB gives E = Y(colour) x I / d^2, Y = 0.2126, 0.7152,
 // 0.0722 (IEC 61966-2-1's primaries, CIE 1931 Y), not a third of it each. Over a black floor, so
 // only the lamp counts; the floor's own statistics read the same.

@@ -3,6 +3,9 @@
 // light into the dark room nor the wall's shadow into the lit room.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <string>
+
 #include "support/scene_builders.h"
 
 namespace radbake {
@@ -60,7 +63,10 @@ TEST_P(LightLeakAtDensity, BlackRoomsTexelsAgainstTheWallMatchTheClosedForm) {
   EXPECT_GT(next_to_wall, 30u);
 }
 
-INSTANTIATE_TEST_SUITE_P(Texels, LightLeakAtDensity, ::testing::Values(33.3f, 28.7f, 41.0f));
+INSTANTIATE_TEST_SUITE_P(Texels, LightLeakAtDensity, ::testing::Values(33.3f, 28.7f, 41.0f),
+                         [](const ::testing::TestParamInfo<float>& info) {
+                           return std::to_string(int(std::lround(info.param * 10))) + "PerTenMetres";
+                         });
 
 TEST(LightLeak, DarkRoomGetsUnderAThousandthOfTheLitRoomsLight) {
   Light light;

@@ -1,5 +1,5 @@
 // A hit on a part whose own chart holds no sample for it (a sill's strip between a frame and the
-// room, a frame's step: issue 57) takes the light of the nearest sample of another part in sight
+// room, a frame's step) takes the light of the nearest sample of another part in sight
 // of it, never of one it cannot see: the inside of a closed box stays its own.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// What light passes through (issue 14): glazing as a thin pane of a visible transmittance, cut-outs
+// What light passes through: glazing as a thin pane of a visible transmittance, cut-outs
 // (alphaMode MASK) casting shadows only where their texture is opaque, and BLEND letting 1 - alpha
 // through; against closed forms in the open.
 #include <gtest/gtest.h>

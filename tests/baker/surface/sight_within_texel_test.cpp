@@ -1,6 +1,6 @@
 // sees_within_texel: between two points of one chart, the chart's own steps and corners do not
 // block the line (a window frame's stepped profile, finer than a texel, hid every sample from the
-// faces round it: issue 57), but the two faces of something thin always do, even in one chart (a
+// faces round it), but the two faces of something thin always do, even in one chart (a
 // door leaf whose edges the atlas hinged: its dark face would take the lit face's light).
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Issue 33: a patch holds a row of form factors (some thousands of targets at production), so
+// A patch holds a row of form factors (some thousands of targets at production), so
 // patches of a fixed number of texels made memory grow with the texels at 3 KB a texel (8 GB at
 // 2.7 million). The presets give a patch budget instead: one patch per so many elements up to a
 // cap, past which patches keep their size in metres. These tests pin what the budget does on the

@@ -228,7 +228,7 @@ TEST_P(BadInput, IsOneClearInputError) {
   }
 }
 
-// Issue 32, point 8: these were refused in tinygltf's words ("Spot light description not found.",
+// These were once refused in tinygltf's words ("Spot light description not found.",
 // "Failed to decode 'uri' : data:... in Buffer") with no JSON pointer. Each is now refused by
 // radbake's own check, at its pointer, before tinygltf reads the file.
 TEST(GltfLoader, RefusalsNameTheirJsonPointerInRadbakesWords) {

@@ -1,4 +1,4 @@
-// Real and hostile input (issue 11): every way a file crashed radbake, read files outside its
+// Real and hostile input: every way a file crashed radbake, read files outside its
 // folder, answered with a library's words or ran out of memory, each refused with one line that
 // names the JSON pointer of the object at fault. Fixtures: tests/fixtures/make_hostile_fixtures.py.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Output valid whatever comes in (issue 29): what radbake accepts but the Khronos glTF-Validator
+// Output valid whatever comes in: what radbake accepts but the Khronos glTF-Validator
 // would reject in what radbake writes (bad vertex data, extension values out of range, morph
 // targets, images that are no PNG or JPEG, skins on unskinned meshes, EXT_texture_webp naming other
 // images) is repaired or dropped with one warning naming its JSON pointer, and both files radbake
