@@ -16,6 +16,7 @@
 
 #include "base/errors.h"
 #include "base/scene.h"
+#include "io/gltf/gltf_extensions.h"
 
 namespace radbake {
 namespace {
@@ -50,19 +51,24 @@ bool ends_with(const std::string& s, const char* tail) {
 // Where an extension object sits; known extensions belong to one kind of object.
 enum class Owner { Document, Node, Material, TextureInfo, Other };
 
-// Whether an extension radbake checks sits where it belongs (the validator's
-// UNEXPECTED_EXTENSION_OBJECT); extensions it does not check may sit anywhere.
+// Whether an extension sits on a kind of object its row in gltf_extensions.h does not allow (the
+// validator's UNEXPECTED_EXTENSION_OBJECT); extensions without a row may sit anywhere.
 bool misplaced(const std::string& name, Owner owner) {
-  if (name == "KHR_lights_punctual") return owner != Owner::Document && owner != Owner::Node;
-  if (name == "KHR_texture_transform") return owner != Owner::TextureInfo;
-  if (name.compare(0, 14, "KHR_materials_") == 0) return owner != Owner::Material;
-  return false;
+  const GltfExtension* row = gltf_extension(name);
+  if (!row || row->sits_on == 0) return false;
+  unsigned on = 0;
+  if (owner == Owner::Document) on = kOnDocument;
+  if (owner == Owner::Node) on = kOnNode;
+  if (owner == Owner::Material) on = kOnMaterial;
+  if (owner == Owner::TextureInfo) on = kOnTextureInfo;
+  return !(row->sits_on & on);
 }
 
-// The extensions radbake reads (io/gltf/gltf_loader.cpp): invalid, they refuse the file; unused but
+// The extensions radbake reads (gltf_extensions.h): invalid, they refuse the file; unused but
 // required, they are dropped from extensionsRequired (the validator's UNUSED_EXTENSION_REQUIRED).
 bool radbake_reads(const std::string& name) {
-  return name == "KHR_lights_punctual" || name == "KHR_texture_transform" || name == "KHR_materials_emissive_strength";
+  const GltfExtension* row = gltf_extension(name);
+  return row && row->refused_when_invalid;
 }
 
 bool valid_attribute_name(const std::string& name) {

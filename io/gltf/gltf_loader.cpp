@@ -10,6 +10,7 @@
 #include "base/errors.h"
 #include "io/files/regular_file.h"
 #include "io/gltf/gltf_check.h"
+#include "io/gltf/gltf_extensions.h"
 #include "io/gltf/gltf_source.h"
 #include "io/gltf/image_repair.h"
 #include "io/gltf/vertex_repair.h"
@@ -24,10 +25,6 @@ constexpr size_t kMaxJsonDepth = 128;
 // World coordinates in metres. Float positions beyond this resolve no better than a metre, and
 // Embree refuses bounds near 1.8e19; ten thousand kilometres holds a planet.
 constexpr double kMaxCoordinate = 1e7;
-
-// Extensions radbake fully honours when a file marks them required.
-const std::set<std::string> kSupportedRequired = {"KHR_lights_punctual", "KHR_materials_emissive_strength",
-                                                  "KHR_texture_transform", "KHR_mesh_quantization"};
 
 std::string one_line(std::string text) {
   std::replace(text.begin(), text.end(), '\n', ' ');
@@ -175,7 +172,7 @@ class SceneBuilder {
  private:
   void check_required_extensions() {
     for (const std::string& ext : model_.extensionsRequired)
-      if (!kSupportedRequired.count(ext))
+      if (const GltfExtension* row = gltf_extension(ext); !row || !row->bakes_when_required)
         refuse(file_, "/extensionsRequired", "the file requires extension " + clipped(ext) + ", which radbake does not support");
   }
 

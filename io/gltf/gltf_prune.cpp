@@ -5,18 +5,12 @@
 #include <map>
 #include <set>
 
+#include "io/gltf/gltf_extensions.h"
+
 namespace radbake {
 namespace {
 
 using json = nlohmann::ordered_json;
-
-// Extensions whose references to other objects are known (or that hold none).
-const std::set<std::string> kKnownExtensions = {
-    "KHR_lights_punctual", "KHR_materials_emissive_strength", "KHR_texture_transform", "KHR_materials_unlit",
-    "KHR_materials_ior", "KHR_materials_specular", "KHR_materials_transmission", "KHR_materials_volume",
-    "KHR_materials_clearcoat", "KHR_materials_sheen", "KHR_materials_iridescence", "KHR_materials_anisotropy",
-    "KHR_materials_dispersion", "KHR_mesh_quantization", "KHR_texture_basisu", "EXT_texture_webp",
-    "EXT_texture_avif", "KHR_materials_variants", "EXT_mesh_gpu_instancing", "MOZ_lightmap"};
 
 // A reference to an object of kind `kind` held at doc[...]; visited so it can be read or rewritten.
 using Visitor = std::function<void(const std::string& kind, json& index)>;
@@ -118,7 +112,7 @@ std::vector<std::string> unknown_extensions(const json& doc) {
   walk(doc);
   std::vector<std::string> unknown;
   for (const std::string& e : used)
-    if (!kKnownExtensions.count(e)) unknown.push_back(e);
+    if (const GltfExtension* row = gltf_extension(e); !row || !row->references_known) unknown.push_back(e);
   return unknown;
 }
 

@@ -4,10 +4,15 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <regex>
+#include <set>
+#include <sstream>
 
 #include "base/errors.h"
+#include "io/gltf/gltf_extensions.h"
 #include "io/gltf/gltf_loader.h"
 #include "support/scene_builders.h"
 
@@ -160,6 +165,83 @@ TEST(GltfCheck, ASpotsInnerConeIsAtLeastZeroAndBelowItsOuterCone) {
   EXPECT_NE(refusal(with_spot(-0.1, 0.4), "spot_negative").find(pointer + "is -0.1; must be from 0 to"), std::string::npos);
   EXPECT_EQ(refusal(with_spot(0, 0.4), "spot_zero"), "(loaded)");
   EXPECT_EQ(refusal(with_spot(0.39, 0.4), "spot_just_below"), "(loaded)");
+}
+
+// The table of extensions (io/gltf/gltf_extensions.h) against what io/gltf really does with them.
+
+// Every extension name io/gltf spells out has its row: a reader or writer that learns an extension
+// without the table would be caught here.
+TEST(GltfExtensions, EveryExtensionTheGltfCodeNamesHasARow) {
+  const std::regex quoted("\"((KHR|EXT|MOZ)_[A-Za-z_]+)\"");
+  std::set<std::string> named;
+  for (const auto& entry : std::filesystem::directory_iterator(test::source_path("io/gltf"))) {
+    std::ifstream in(entry.path());
+    std::stringstream text;
+    text << in.rdbuf();
+    const std::string code = text.str();
+    for (auto it = std::sregex_iterator(code.begin(), code.end(), quoted); it != std::sregex_iterator(); ++it)
+      named.insert((*it)[1]);
+  }
+  named.erase("KHR_materials_");  // the prefix the shared row answers for
+  EXPECT_GE(named.size(), 10u);
+  for (const std::string& name : named) {
+    const GltfExtension* row = gltf_extension(name);
+    EXPECT_TRUE(row && name == row->name) << name << " is named in io/gltf but has no row of its own";
+  }
+}
+
+// A file that lists an extension in extensionsRequired bakes exactly when its row says so; one
+// that requires an extension without a row, or a Khronos material extension without one, is refused.
+TEST(GltfExtensions, ARequiredExtensionBakesExactlyWhenItsRowSaysSo) {
+  std::vector<std::pair<std::string, bool>> cases = {{"EXT_made_up_here", false}, {"KHR_materials_made_up_here", false}};
+  for (const GltfExtension& row : gltf_extensions()) cases.emplace_back(row.name, row.bakes_when_required);
+  for (const auto& [name, bakes] : cases) {
+    json doc = room();
+    doc["extensionsUsed"].push_back(name);
+    doc["extensionsRequired"] = {name};
+    const std::string outcome = refusal(doc, "required_" + name);
+    if (bakes) EXPECT_EQ(outcome, "(loaded)") << name;
+    else EXPECT_NE(outcome.find("/extensionsRequired: the file requires extension " + name), std::string::npos) << outcome;
+  }
+}
+
+// Where each row says an extension may sit: elsewhere it is dropped with a warning (a material's
+// extension on a node, a node's on a material). Where it may sit, an extension radbake reads
+// refuses the file when its object is not an object; any other is dropped.
+TEST(GltfExtensions, EachSitsWhereItsRowSaysAndAnInvalidOneIsRefusedOnlyIfRadbakeReadsIt) {
+  size_t placed = 0;
+  for (const GltfExtension& row : gltf_extensions()) {
+    if (row.sits_on == 0) continue;
+    ++placed;
+    const std::string name = row.name;
+    const bool on_material = row.sits_on & kOnMaterial;
+    json doc = room();
+    doc["extensionsUsed"].push_back(name);
+    if (on_material) doc["nodes"][0]["extensions"][name] = json::object();
+    else doc["materials"][0]["extensions"][name] = json::object();
+    const Scene scene = load_gltf(save("misplaced_" + name, doc)).scene;
+    EXPECT_TRUE(warned(scene, on_material ? "dropped /nodes/0/extensions/" + name : "dropped /materials/0/extensions/" + name))
+        << name;
+
+    doc = room();
+    doc["extensionsUsed"].push_back(name);
+    json* where = &doc;
+    std::string at = "";
+    if (row.sits_on & kOnMaterial) where = &doc["materials"][0], at = "/materials/0";
+    else if (row.sits_on & kOnTextureInfo)
+      where = &doc["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"],
+      at = "/materials/0/pbrMetallicRoughness/baseColorTexture";
+    (*where)["extensions"][name] = 5;
+    const std::string outcome = refusal(doc, "not_an_object_" + name);
+    if (row.refused_when_invalid) {
+      EXPECT_NE(outcome.find(at + "/extensions/" + name + ": must be an object"), std::string::npos) << outcome;
+    } else {
+      EXPECT_EQ(outcome, "(loaded)") << name;
+      EXPECT_TRUE(warned(load_gltf(save("not_an_object_" + name, doc)).scene, "dropped " + at + "/extensions/" + name))
+          << name;
+    }
+  }
+  EXPECT_GE(placed, 12u);
 }
 
 }  // namespace
