@@ -10,6 +10,11 @@
 
 namespace radbake {
 
+// Wall-clock seconds since `start`: what the report gives each stage.
+inline double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
 // Receives the stage name and the fraction done in [0, 1]; returns false to cancel the bake.
 using ProgressCallback = std::function<bool(const std::string& stage, double fraction)>;
 

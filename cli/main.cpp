@@ -14,6 +14,7 @@
 #include "baker/surface/back_faces.h"
 #include "baker/surface/surface.h"
 #include "base/errors.h"
+#include "base/progress.h"
 #include "base/version.h"
 #include "cli/command_line.h"
 #include "cli/diff_command.h"
@@ -39,10 +40,6 @@ namespace {
 // One line whatever the message quotes: each quoted piece of user text should be clipped where the
 // message is made, and this bounds the line when one was not.
 void print_error(const std::exception& e) { std::fprintf(stderr, "radbake: error: %s\n", radbake::clipped(e.what(), 600).c_str()); }
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 // --preview-every: the solve's estimate as PNG pages in OUTDIR/preview/, numbered by shot (or
 // sweep), all at the scale of the first so they brighten as light is shot. They are written into

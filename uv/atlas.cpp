@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "base/errors.h"
+#include "base/progress.h"
 #include "uv/charts.h"
 
 namespace radbake {
@@ -362,7 +363,7 @@ Atlas ensure_lightmap_uvs(const std::vector<MeshView>& meshes, const AtlasOption
   progress.step(kPackingEnd, 1);
   atlas.stats = measure_atlas(meshes, atlas, options.padding);
   atlas.stats.seam_length = seam_length;
-  atlas.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  atlas.stats.seconds = seconds_since(start);
   return atlas;
 }
 

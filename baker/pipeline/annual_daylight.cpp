@@ -12,14 +12,11 @@
 #include "baker/pipeline/bake.h"
 #include "baker/surface/sampling.h"
 #include "baker/transport/patch_transport.h"
+#include "base/progress.h"
 #include "daylight/sky_patches.h"
 
 namespace radbake {
 namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 // The scene's up, north and east (from BakeOptions::sky), to turn directions into altitude and
 // azimuth and back.

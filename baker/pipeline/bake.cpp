@@ -22,6 +22,7 @@
 #include "baker/surface/surface.h"
 #include "baker/transport/patch_transport.h"
 #include "base/errors.h"
+#include "base/progress.h"
 
 namespace radbake {
 namespace {
@@ -33,7 +34,7 @@ class StageClock {
   auto run(const char* stage, F&& f) {
     auto start = std::chrono::steady_clock::now();
     auto result = f();
-    times_.push_back({stage, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()});
+    times_.push_back({stage, seconds_since(start)});
     // Stages free large scratch arrays; hand those pages back so the next stage's peak starts
     // from what is live, not from what the allocator keeps cached.
     malloc_trim(0);
@@ -332,8 +333,7 @@ void interreflect(const Elements& elements, const Surface& surface, const RayTra
                                                         options.form_factors, options.subdivision, solve, options.seed,
                                                         progress, observer, options.sharing);
   if (options.sharing.stop_after == StopAfter::Radiosity) throw StoppedEarly("radiosity");
-  const double interreflection_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  const double interreflection_seconds = seconds_since(started);
   report.stage_times.push_back({"patches", interreflection_seconds - light_between.form_factor_seconds -
                                                light_between.solve_seconds});
   report.stage_times.push_back({"form factors", light_between.form_factor_seconds});

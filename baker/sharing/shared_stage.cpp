@@ -8,6 +8,7 @@
 
 #include "baker/sharing/byte_stream.h"
 #include "base/errors.h"
+#include "base/progress.h"
 
 namespace radbake {
 namespace {
@@ -170,7 +171,7 @@ void run_shared_stage(const SharedStage& stage, Team& team, StageStore* store, b
       const uint64_t rays_before = tracer.rays_cast();
       const auto start = std::chrono::steady_clock::now();
       Bytes result = stage.compute(chunk);
-      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      const double seconds = seconds_since(start);
       ++mine;
       costs.put(ChunkCost{chunk, tracer.rays_cast() - rays_before, seconds});
       results.put(uint64_t(chunk));

@@ -9,13 +9,10 @@
 #include "baker/transport/free_path.h"
 #include "baker/transport/hemicube_transport.h"
 #include "base/errors.h"
+#include "base/progress.h"
 
 namespace radbake {
 namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 // Per patch: the area-weighted mean direct irradiance, and the power (lm, summed over RGB) leaving
 // on the first bounce, which weights the ray-cast form factors.
