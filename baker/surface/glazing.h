@@ -7,9 +7,9 @@
 //   absorption is what the normal transmittance leaves after the faces' reflections. Within 0.42%
 //   of CIE 171's 6 mm clear glass over 0-80 degrees, and of ESP-r's clear and bronze angular
 //   tables within 0.3%.
-// - Fresnel: the same faces without absorption (radbake's model until the CIE 171 angular tables), scaled to the normal
-//   transmittance: a tinted or low pane keeps a clear pane's shape, 3% high at 80 degrees against
-//   CIE 171 for clear glass.
+// - Fresnel: the same faces without absorption (radbake's model before the CIE 171 tables), scaled
+//   to the normal transmittance: a tinted or low pane keeps a clear pane's shape, 3% high at 80
+//   degrees against CIE 171 for clear glass.
 // - Cie171: CIE 171:2006's polynomial for 6 mm clear glass (Tregenza and Sharples), scaled to the
 //   normal transmittance: the test cases 5.10 and 5.12 exactly, one shape whatever the pane.
 #pragma once

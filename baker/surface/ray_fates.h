@@ -28,7 +28,7 @@ constexpr size_t kRayFateCount = 8;
 // The name report.json gives each fate, in RayFate's order.
 constexpr std::array<const char*, kRayFateCount> kRayFateNames = {
     "took_light", "escaped", "back_face", "no_element", "buried_element", "other_side", "sealed_gap",
-                                                                 "inside_geometry"};
+    "inside_geometry"};
 
 struct RayFates {
   std::array<uint64_t, kRayFateCount> count{};

@@ -48,20 +48,20 @@ bool ends_with(const std::string& s, const char* tail) {
   return s.size() >= n && s.compare(s.size() - n, n, tail) == 0;
 }
 
-// Where an extension object sits; known extensions belong to one kind of object.
-enum class Owner { Document, Node, Material, TextureInfo, Other };
+// Where an extension object sits, as gltf_extensions.h's bits; known extensions belong to one kind of object.
+enum class Owner : unsigned {
+  Document = kOnDocument,
+  Node = kOnNode,
+  Material = kOnMaterial,
+  TextureInfo = kOnTextureInfo,
+  Other = 0
+};
 
 // Whether an extension sits on a kind of object its row in gltf_extensions.h does not allow (the
 // validator's UNEXPECTED_EXTENSION_OBJECT); extensions without a row may sit anywhere.
 bool misplaced(const std::string& name, Owner owner) {
   const GltfExtension* row = gltf_extension(name);
-  if (!row || row->sits_on == 0) return false;
-  unsigned on = 0;
-  if (owner == Owner::Document) on = kOnDocument;
-  if (owner == Owner::Node) on = kOnNode;
-  if (owner == Owner::Material) on = kOnMaterial;
-  if (owner == Owner::TextureInfo) on = kOnTextureInfo;
-  return !(row->sits_on & on);
+  return row && row->sits_on != 0 && !(row->sits_on & unsigned(owner));
 }
 
 // The extensions radbake reads (gltf_extensions.h): invalid, they refuse the file; unused but

@@ -25,10 +25,9 @@ struct GltfExtension {
   // What its objects refer to (textures, accessors, materials) is known, so the objects nothing
   // refers to can be pruned from the output (gltf_prune.cpp); any other extension keeps them all.
   bool references_known;
-  const char* use;  // what radbake does with it
 };
 
-// Every row.
+// Every row; gltf_extensions.cpp says beside each what radbake does with the extension.
 const std::vector<GltfExtension>& gltf_extensions();
 
 // The row of `name`, or, for a Khronos material extension without one, the row that every
