@@ -5,7 +5,7 @@
 // The signals are blocked in every thread and taken by one watcher thread (sigwait), so no
 // handler interrupts the code at an arbitrary point: the watcher sets the flag that the progress
 // callbacks poll, and the main thread unwinds through StagedFolder's destructor, which removes
-// the staging folder. Some work cannot poll (tinygltf parsing a large file, OpenImageIO writing a
+// the staging folder. Some work cannot poll (tinygltf parsing a large file, OpenEXR writing a
 // page); when the main thread has not ended the process a second after the signal, or at a
 // second signal, the watcher removes the staging folder itself (StagedFolder::abandon) and ends
 // the process with _exit.

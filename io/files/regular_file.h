@@ -26,8 +26,6 @@ class RegularFile {
   uint64_t size() const { return size_; }
   // How many names the file has: a hard link made elsewhere counts.
   uint64_t links() const { return links_; }
-  // For a library that reads through a descriptor of its own (dup it; this one closes with the object).
-  int descriptor() const { return fd_; }
   // Reads exactly `bytes` bytes, or returns false (the file ended first, or a read failed).
   bool read(void* into, uint64_t bytes);
   // The same from byte `offset`, without moving where read() goes on from.

@@ -1,6 +1,6 @@
 // What radbake says when an output cannot be written: one line naming the file and the reason in
 // radbake's words (the disk is full, read-only, or the folder is not the user's), never a
-// library's ("Failed OpenEXR write: ... File output failed."). OpenImageIO does not say why; the
+// library's ("Failed OpenEXR write: ... File output failed."). The libraries do not say why; the
 // free space on the file's disk and errno do.
 #pragma once
 

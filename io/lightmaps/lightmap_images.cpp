@@ -1,17 +1,21 @@
 #include "io/lightmaps/lightmap_images.h"
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
-
-#include <unistd.h>
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfIO.h>
+#include <OpenEXR/ImfInputFile.h>
+#include <OpenEXR/ImfOutputFile.h>
+#include <Imath/half.h>
+#include <png.h>
 
 #include <algorithm>
 #include <cerrno>
-#include <cstdio>
-#include <cstring>
-#include <memory>
 #include <cmath>
+#include <csetjmp>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <stdexcept>
 
 #include "base/errors.h"
@@ -30,17 +34,50 @@ uint8_t encode_srgb(float linear) {
   return uint8_t(std::lround(s * 255.0f));
 }
 
-void write_image(const std::string& path, int width, int height, const OIIO::TypeDesc& format, const void* pixels,
-                 const OIIO::TypeDesc& pixel_type, bool exr) {
-  auto out = OIIO::ImageOutput::create(path);
-  if (!out) throw std::runtime_error("cannot create " + path + ": " + OIIO::geterror());
-  OIIO::ImageSpec spec(width, height, 3, format);
-  if (exr) spec.attribute("compression", "zip");
-  errno = 0;
-  if (!out->open(path, spec) || !out->write_image(pixel_type, pixels) || !out->close()) {
-    out->geterror();  // OpenImageIO's words, cleared: they name its internals, not the reason
-    refuse_unwritten(path);
+// OpenEXR writes through this, so every failed write (a full disk, also while OpenEXR's
+// destructor writes the line offsets and swallows what it throws) leaves the stream failed, for
+// close_written to report in radbake's words.
+class ExrFileStream : public Imf::OStream {
+ public:
+  ExrFileStream(std::ofstream& out, const std::string& path) : Imf::OStream(path.c_str()), out_(out) {}
+  void write(const char c[], int n) override {
+    out_.write(c, n);
+    if (!out_) throw std::runtime_error("write failed");
   }
+  uint64_t tellp() override { return uint64_t(out_.tellp()); }
+  void seekp(uint64_t pos) override {
+    out_.seekp(std::streamoff(pos));
+    if (!out_) throw std::runtime_error("seek failed");
+  }
+
+ private:
+  std::ofstream& out_;
+};
+
+// PNG's bytes, appended by libpng as it compresses.
+void append_png_bytes(png_structp png, png_bytep data, png_size_t length) {
+  auto* bytes = static_cast<std::vector<uint8_t>*>(png_get_io_ptr(png));
+  bytes->insert(bytes->end(), data, data + length);
+}
+
+// libpng reports an error by longjmp back to the setjmp here, so nothing with a destructor is made
+// between the two.
+bool encode_png_into(std::vector<uint8_t>* bytes, int width, int height, const uint8_t* rgb) {
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  if (!png) return false;
+  png_infop info = png_create_info_struct(png);
+  if (!info || setjmp(png_jmpbuf(png))) {
+    png_destroy_write_struct(&png, &info);
+    return false;
+  }
+  png_set_write_fn(png, bytes, append_png_bytes, nullptr);
+  png_set_IHDR(png, info, png_uint_32(width), png_uint_32(height), 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
+               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_write_info(png, info);
+  for (int y = 0; y < height; ++y) png_write_row(png, rgb + size_t(y) * size_t(width) * 3);
+  png_write_end(png, nullptr);
+  png_destroy_write_struct(&png, &info);
+  return true;
 }
 
 }  // namespace
@@ -52,12 +89,48 @@ void write_exr(const std::string& path, const LightmapPage& page) {
   constexpr float kLargestHalf = 65504.0f;
   bool fits_half = std::all_of(page.texels.begin(), page.texels.end(),
                                [&](const Rgb& t) { return max_component(t) <= kLargestHalf; });
-  write_image(path, page.width, page.height, fits_half ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT,
-              page.texels.data(), OIIO::TypeDesc::FLOAT, true);
+  // No capture date or other stamp: the same bake writes the same bytes.
+  Imf::Header header(page.width, page.height);
+  header.compression() = Imf::ZIP_COMPRESSION;
+  // OpenEXR writes a channel from texels of its own type only: half floats are made here.
+  std::vector<half> halves;
+  if (fits_half) {
+    halves.reserve(page.texels.size() * 3);
+    for (const Rgb& t : page.texels) halves.insert(halves.end(), {half(t.x), half(t.y), half(t.z)});
+  }
+  const Imf::PixelType type = fits_half ? Imf::HALF : Imf::FLOAT;
+  const size_t value_bytes = fits_half ? sizeof(half) : sizeof(float);
+  char* first = fits_half ? reinterpret_cast<char*>(halves.data())
+                          : const_cast<char*>(reinterpret_cast<const char*>(page.texels.data()));
+  Imf::FrameBuffer texels;
+  const char* channels[3] = {"R", "G", "B"};
+  for (size_t c = 0; c < 3; ++c) {
+    header.channels().insert(channels[c], Imf::Channel(type));
+    texels.insert(channels[c], Imf::Slice(type, first + c * value_bytes, 3 * value_bytes, 3 * value_bytes * size_t(page.width)));
+  }
+  std::ofstream out(path, std::ios::binary);
+  if (!out) refuse_unwritten(path);
+  errno = 0;
+  bool written = true;
+  try {
+    ExrFileStream stream(out, path);
+    Imf::OutputFile file(stream, header);
+    file.setFrameBuffer(texels);
+    file.writePixels(page.height);
+  } catch (const std::exception&) {
+    written = false;  // OpenEXR's words name its internals; the stream and the disk say why
+  }
+  if (!written) refuse_unwritten(path);
+  close_written(out, path);
 }
 
 void write_png(const std::string& path, int width, int height, const std::vector<uint8_t>& rgb) {
-  write_image(path, width, height, OIIO::TypeDesc::UINT8, rgb.data(), OIIO::TypeDesc::UINT8, false);
+  const std::vector<uint8_t> bytes = encode_png(width, height, rgb);
+  std::ofstream out(path, std::ios::binary);
+  if (!out) refuse_unwritten(path);
+  errno = 0;
+  out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+  close_written(out, path);
 }
 
 float automatic_png_scale(const std::vector<LightmapPage>& pages) {
@@ -106,14 +179,10 @@ void write_lightmap_png(const std::string& path, const LightmapPage& page, float
 }
 
 std::vector<uint8_t> encode_png(int width, int height, const std::vector<uint8_t>& rgb) {
-  std::vector<unsigned char> bytes;
-  OIIO::Filesystem::IOVecOutput memory(bytes);
-  auto out = OIIO::ImageOutput::create("page.png", &memory);
-  if (!out) throw std::runtime_error(std::string("cannot create a PNG encoder: ") + OIIO::geterror());
-  OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
-  if (!out->open("page.png", spec) || !out->write_image(OIIO::TypeDesc::UINT8, rgb.data()) || !out->close())
-    throw std::runtime_error("cannot encode a PNG: " + out->geterror());
-  return std::vector<uint8_t>(bytes.begin(), bytes.end());
+  if (rgb.size() != size_t(width) * size_t(height) * 3) throw std::invalid_argument("PNG pixels do not fill the image");
+  std::vector<uint8_t> bytes;
+  if (!encode_png_into(&bytes, width, height, rgb.data())) throw std::runtime_error("cannot encode a PNG");
+  return bytes;
 }
 
 std::vector<uint8_t> encode_display_png(const LightmapPage& luminance, float exposure) {
@@ -168,35 +237,64 @@ void check_exr_header(RegularFile& file, const std::string& path) {
 
 }  // namespace
 
+namespace {
+
+// OpenEXR reads the page through the descriptor radbake opened and checked.
+class ExrFileInput : public Imf::IStream {
+ public:
+  ExrFileInput(RegularFile& file, const std::string& path) : Imf::IStream(path.c_str()), file_(file) {}
+  bool read(char c[], int n) override {
+    if (n < 0 || !file_.read_at(at_, c, size_t(n))) throw std::runtime_error("cut short");
+    at_ += uint64_t(n);
+    return at_ < file_.size();
+  }
+  uint64_t tellg() override { return at_; }
+  void seekg(uint64_t pos) override { at_ = pos; }
+
+ private:
+  RegularFile& file_;
+  uint64_t at_ = 0;
+};
+
+}  // namespace
+
 LightmapPage read_lightmap_exr(const std::string& path) {
   // Opened as a regular file first, and read through that very descriptor.
   RegularFile file(path, "lightmap page");
   check_exr_header(file, path);
-  const std::unique_ptr<FILE, int (*)(FILE*)> stream(::fdopen(::dup(file.descriptor()), "rb"), &std::fclose);
-  if (!stream) throw InputError("cannot read " + clipped(path) + ": " + std::strerror(errno));
-  OIIO::Filesystem::IOFile proxy(stream.get(), OIIO::Filesystem::IOProxy::Read);
   // OpenEXR's own words name its internals; what is left to fail here is damage past the header.
   const std::string damaged = "cannot read " + clipped(path) + ": its pixels are damaged or cut short";
-  auto in = OIIO::ImageInput::open(path, nullptr, &proxy);
-  if (!in) {
-    OIIO::geterror();  // cleared, for the next reader
-    throw InputError(damaged);
-  }
-  const OIIO::ImageSpec& spec = in->spec();
-  if (spec.nchannels < 3)
-    throw InputError(clipped(path) + " has " + std::to_string(spec.nchannels) + " channel(s); a lightmap page is RGB");
-  if (spec.width > kLargestPageSide || spec.height > kLargestPageSide || spec.depth != 1) throw InputError(damaged);
   LightmapPage page;
-  page.width = spec.width;
-  page.height = spec.height;
-  std::vector<float> pixels(size_t(spec.width) * spec.height * 3);
-  if (!in->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, pixels.data())) {
-    in->geterror();
+  try {
+    ExrFileInput stream(file, path);
+    Imf::InputFile in(stream);
+    const Imath::Box2i window = in.header().dataWindow();
+    page.width = window.max.x - window.min.x + 1;
+    page.height = window.max.y - window.min.y + 1;
+    const Imf::ChannelList& channels = in.header().channels();
+    for (const char* c : {"R", "G", "B"})
+      if (!channels.findChannel(c)) {
+        size_t count = 0;
+        for (auto it = channels.begin(); it != channels.end(); ++it) ++count;
+        throw InputError(clipped(path) + " has no " + c + " channel (" + std::to_string(count) +
+                         " channel(s)); a lightmap page is RGB");
+      }
+    page.texels.resize(size_t(page.width) * size_t(page.height));
+    // OpenEXR addresses the buffer by pixel coordinates, which start at the window's corner.
+    char* origin = reinterpret_cast<char*>(page.texels.data()) -
+                   (ptrdiff_t(window.min.x) + ptrdiff_t(window.min.y) * page.width) * ptrdiff_t(sizeof(Rgb));
+    Imf::FrameBuffer texels;
+    const char* names[3] = {"R", "G", "B"};
+    for (size_t c = 0; c < 3; ++c)
+      texels.insert(names[c], Imf::Slice(Imf::FLOAT, origin + c * sizeof(float), sizeof(Rgb), sizeof(Rgb) * size_t(page.width)));
+    in.setFrameBuffer(texels);
+    in.readPixels(window.min.y, window.max.y);
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::exception&) {
     throw InputError(damaged);
   }
-  page.texels.resize(size_t(spec.width) * spec.height);
   page.valid.assign(page.texels.size(), 1);
-  for (size_t t = 0; t < page.texels.size(); ++t) page.texels[t] = {pixels[3 * t], pixels[3 * t + 1], pixels[3 * t + 2]};
   return page;
 }
 

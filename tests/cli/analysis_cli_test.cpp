@@ -3,8 +3,6 @@
 // report.json.
 #include <gtest/gtest.h>
 
-#include <OpenImageIO/imageio.h>
-
 #include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -12,6 +10,7 @@
 
 #include "support/closed_forms.h"
 #include "support/commands.h"
+#include "support/images.h"
 #include "support/scene_builders.h"
 
 namespace radbake {
@@ -36,8 +35,9 @@ std::vector<std::vector<double>> csv_rows(const std::string& path) {
 }
 
 int png_width(const std::string& path) {
-  auto in = OIIO::ImageInput::open(path);
-  return in ? in->spec().width : -1;
+  int width = -1;
+  test::read_png_rgb(path, &width);
+  return width;
 }
 
 TEST(AnalysisCli, AWorkPlaneUnderAnOvercastSkyGivesLuxDaylightFactorsAndTheirImages) {

@@ -2,14 +2,13 @@
 // them, and that the packed PNG pages decode to the EXR pages' values.
 #include <gtest/gtest.h>
 
-#include <OpenImageIO/imageio.h>
-
 #include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
 #include "io/lightmaps/lightmap_images.h"
 #include "support/commands.h"
+#include "support/images.h"
 #include "support/scene_builders.h"
 
 namespace radbake {
@@ -18,13 +17,8 @@ namespace {
 namespace fs = std::filesystem;
 
 std::vector<uint8_t> png_bytes(const std::string& path, int& width, int& height) {
-  auto in = OIIO::ImageInput::open(path);
-  EXPECT_TRUE(in) << path;
-  if (!in) return {};
-  width = in->spec().width;
-  height = in->spec().height;
-  std::vector<uint8_t> pixels(size_t(width) * size_t(height) * 3);
-  EXPECT_TRUE(in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, pixels.data()));
+  std::vector<uint8_t> pixels = test::read_png_rgb(path, &width, &height);
+  EXPECT_FALSE(pixels.empty()) << path;
   return pixels;
 }
 

@@ -396,7 +396,7 @@ TEST(View, AClickReadsTheIlluminanceTheExrHoldsThere) {
     // The reading is photopic, as every lux radbake prints (on the red wall a third of the RGB
     // mean would be 10% off).
     const double exr = photopic(page.texels[size_t(y) * size_t(page.width) + size_t(x)]);
-    // 1%: both read the same half floats (OpenImageIO here, three.js's
+    // 1%: both read the same half floats (OpenEXR here, three.js's
     // EXRLoader in the page), so only a wrong texel or a wrong page would differ.
     EXPECT_NEAR(double(pick["value"]), exr, 0.01 * exr) << pick.dump();
     EXPECT_GT(exr, 1.0) << pick.dump();  // a lit texel, not padding

@@ -83,7 +83,7 @@ if deb:
     subprocess.run(["dpkg-deb", "-x", os.path.join(packages, debs[0]), root], check=True)
     control = subprocess.run(["dpkg-deb", "-f", os.path.join(packages, debs[0]), "Depends"], capture_output=True,
                              text=True, check=True).stdout
-    check("libembree" in control and "libopenimageio" in control.lower(), "the package's Depends lacks its libraries: " + control)
+    check("libembree" in control and "libopenexr" in control.lower() and "libpng" in control.lower(), "the package's Depends lacks its libraries: " + control)
     for path in ["usr/bin/radbake", "usr/share/radbake/web/viewer/index.html", "usr/share/radbake/web/three/build/three.module.js",
                  "usr/share/radbake/web/radbake-lightmap.js", "usr/share/radbake/web/gltf-transform.config.mjs",
                  "usr/share/radbake/radbake_blender_addon.zip"]:

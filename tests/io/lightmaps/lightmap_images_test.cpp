@@ -2,9 +2,8 @@
 // where half would overflow (daylight illuminance passes 65504 lux).
 #include <gtest/gtest.h>
 
-#include <OpenImageIO/imageio.h>
-
 #include "io/lightmaps/lightmap_images.h"
+#include "support/images.h"
 #include "support/scene_builders.h"
 
 namespace radbake {
@@ -18,16 +17,10 @@ LightmapPage page_with(Rgb value) {
   return page;
 }
 
-OIIO::TypeDesc stored_format(const std::string& path) {
-  auto in = OIIO::ImageInput::open(path);
-  EXPECT_TRUE(in) << path;
-  return in ? in->spec().format : OIIO::TypeDesc::UNKNOWN;
-}
-
 TEST(LightmapImages, InteriorValuesAreHalfFloat) {
   std::string path = test::fresh_folder("exr_half") + "/page.exr";
   write_exr(path, page_with({500.0f, 250.0f, 12.5f}));
-  EXPECT_EQ(stored_format(path), OIIO::TypeDesc::HALF);
+  EXPECT_EQ(test::exr_storage(path), test::ExrStorage::Half);
   LightmapPage back = read_lightmap_exr(path);
   EXPECT_FLOAT_EQ(back.texels[5].x, 500.0f);  // exactly representable in half
 }
@@ -35,7 +28,7 @@ TEST(LightmapImages, InteriorValuesAreHalfFloat) {
 TEST(LightmapImages, DaylightValuesAreFullFloatNotInfinity) {
   std::string path = test::fresh_folder("exr_float") + "/page.exr";
   write_exr(path, page_with({110000.0f, 98765.4f, 70000.0f}));
-  EXPECT_EQ(stored_format(path), OIIO::TypeDesc::FLOAT);
+  EXPECT_EQ(test::exr_storage(path), test::ExrStorage::Float);
   LightmapPage back = read_lightmap_exr(path);
   EXPECT_FLOAT_EQ(back.texels[5].x, 110000.0f);
   EXPECT_FLOAT_EQ(back.texels[5].y, 98765.4f);
