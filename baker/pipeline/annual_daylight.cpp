@@ -147,6 +147,251 @@ void texel_maps(const Elements& e, const Surface& surface, const std::vector<flo
   out.texel_mean_lux = compose_pages(e, mean, surface.pages);
 }
 
+// What every phase of the year reads: the scene as a bake sees it, the compass and the patches of
+// the sky (`sky`: the surfaces' light; `fine`: the sky a sensor sees itself; `sun_bins`).
+struct YearScene {
+  const Elements& e;
+  const Surface& surface;
+  const RayTracer& tracer;
+  Compass compass;
+  SkyPatches sky, fine, sun_bins;
+  size_t bins;  // the sky's patches, then the ground
+  uint64_t seed;
+};
+
+// Each element's sky, by the rays the sky's irradiance casts: lux per cd/m2 of each bin,
+// [element * bins + bin].
+std::vector<float> sky_response(const YearScene& y, uint32_t rays, Progress& progress) {
+  const Elements& e = y.e;
+  const size_t n = e.size(), bins = y.bins;
+  std::vector<float> response(n * bins, 0.0f);
+  progress.begin("sky patches", n);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 64), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t i = r.begin(); i < r.end(); ++i) {
+      if (!e.valid(i)) continue;
+      const Vec3 ng = y.surface.normal[e.triangle[i]];
+      Rng rng(y.seed, Stream::Sky, i);
+      const SkyRayPatterns pattern(rng);
+      for (uint32_t k = 0; k < rays; ++k) {
+        const Vec3 origin = footprint_point(e, y.surface, i, cmj_sample(k, rays, pattern.origin)) + ng * e.offset[i];
+        const Vec3 d = hemisphere_direction(e.normal[i], ng, cmj_sample(k, rays, pattern.direction));
+        const float passes = y.tracer.transmittance(origin, d, 0.0f, INFINITY);
+        if (!(passes > 0)) continue;
+        const size_t bin = dot(d, y.compass.up) > 0 ? y.compass.patch(y.sky, d) : bins - 1;
+        response[i * bins + bin] += float(M_PI) * passes / float(rays);
+      }
+    }
+    progress.advance(r.size());
+  });
+  progress.end();
+  return response;
+}
+
+// The sun bins around the year's suns, each solved once: per hour its columns (SunColumns), and
+// the bin of sun_bins each column stands for.
+struct YearSuns {
+  std::vector<SunColumns> columns_of_hour;
+  std::vector<size_t> bin_of_column;
+};
+
+YearSuns year_suns(const std::vector<SkyLight>& hours, const SkyPatches& sun_bins) {
+  YearSuns out;
+  out.columns_of_hour.resize(hours.size());
+  std::map<size_t, size_t> solved_bin;  // bin of sun_bins -> column
+  for (size_t h = 0; h < hours.size(); ++h) {
+    const SkyLight& hour = hours[h];
+    if (!hour.enabled || !(hour.sun_illuminance > 0) || !(hour.sun_zenith < M_PI / 2)) continue;
+    for (auto [bin, weight] : sun_bins.interpolation(M_PI / 2 - hour.sun_zenith, hour.sun_azimuth))
+      if (weight > 1e-6) out.columns_of_hour[h].push_back({solved_bin.emplace(bin, solved_bin.size()).first->second, float(weight)});
+  }
+  out.bin_of_column.resize(solved_bin.size());
+  for (auto [bin, column] : solved_bin) out.bin_of_column[column] = bin;
+  return out;
+}
+
+// What each sensor's gather rays strike, and the sky it sees itself.
+struct SensorRays {
+  std::vector<std::vector<int64_t>> hits;
+  std::vector<DirectSky> seen_sky;
+};
+
+SensorRays sensor_rays(const YearScene& y, const std::vector<Sensor>& sensors, const SkyPortals& portals,
+                       const BakeOptions& options) {
+  SensorRays out;
+  out.hits.resize(sensors.size());
+  out.seen_sky.resize(sensors.size());
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, sensors.size(), 4), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t s = r.begin(); s < r.end(); ++s) {
+      out.hits[s] = sensor_gather_hits(sensors[s], s, y.e, y.surface, y.tracer, options.sensor.rays, y.seed).elements;
+      out.seen_sky[s] = direct_sky(sensors[s], s, y.fine, y.compass, y.surface, y.tracer, portals, options.sensor.sky_rays, y.seed);
+    }
+  });
+  return out;
+}
+
+// Column c's direct light on each element per unit of it: a sky bin's from the response, a sun
+// bin's by shadow rays toward the bin's centre (per lux of direct normal sun).
+std::vector<float> column_direct(const YearScene& y, const std::vector<float>& response, const YearSuns& suns,
+                                 uint32_t bin_sun_rays, size_t c) {
+  const Elements& e = y.e;
+  const size_t n = e.size(), bins = y.bins;
+  std::vector<float> direct(n, 0.0f);
+  if (c < bins) {
+    for (size_t i = 0; i < n; ++i) direct[i] = response[i * bins + c];
+    return direct;
+  }
+  double altitude = 0, azimuth = 0;
+  y.sun_bins.centre(suns.bin_of_column[c - bins], &altitude, &azimuth);
+  const Vec3 d = y.compass.direction(altitude, azimuth);
+  const uint32_t k_rays = std::max<uint32_t>(1, bin_sun_rays);
+  for (size_t i = 0; i < n; ++i) {
+    if (!e.valid(i)) continue;
+    const Vec3 ng = y.surface.normal[e.triangle[i]];
+    const float incidence = dot(e.normal[i], d);
+    if (!(incidence > 0) || !(dot(ng, d) > 0)) continue;
+    Rng rng(y.seed, Stream::Sky, uint64_t(c) << 40 ^ i);
+    const uint32_t pattern = rng.next_u32();
+    float passes = 0;
+    for (uint32_t k = 0; k < k_rays; ++k)
+      passes += y.tracer.transmittance(footprint_point(e, y.surface, i, cmj_sample(k, k_rays, pattern)) + ng * e.offset[i],
+                                       d, 0.0f, INFINITY);
+    direct[i] = incidence * passes / float(k_rays);
+  }
+  return direct;
+}
+
+// Each patch's area-weighted mean of its members' direct light.
+std::vector<Rgb> patch_means(const Patches& patches, const Elements& e, const std::vector<float>& direct) {
+  std::vector<Rgb> out(patches.size(), Rgb{});
+  for (size_t p = 0; p < patches.size(); ++p) {
+    double total = 0;
+    for (uint32_t k = patches.first_member[p]; k < patches.first_member[p + 1]; ++k)
+      total += double(direct[patches.members[k]]) * e.area[patches.members[k]];
+    const float mean = patches.area[p] > 0 ? float(total / patches.area[p]) : 0.0f;
+    out[p] = Rgb{mean, mean, mean};
+  }
+  return out;
+}
+
+// One solve per sky patch, the ground and each sun bin: the coefficients of what the surfaces
+// send each sensor, lux per cd/m2 (sky, ground) or per lux of direct normal sun,
+// [sensor * columns + column]; and, when `texel_coefficient` is not empty, what each column brings
+// each element, [element * columns + column].
+std::vector<float> daylight_coefficients(const YearScene& y, const Interreflection& light_between,
+                                         const std::vector<float>& response, const YearSuns& suns,
+                                         const SensorRays& rays, const BakeOptions& options,
+                                         const AnnualDaylightOptions& annual, std::vector<float>& texel_coefficient,
+                                         Progress& progress) {
+  const Elements& e = y.e;
+  const Patches& patches = light_between.patches;
+  const size_t n = e.size(), sensors = rays.hits.size(), columns = y.bins + suns.bin_of_column.size();
+  const uint32_t gather_rays = rays_per_batch(options.sensor.rays) * kSensorBatches;
+  const bool texels = !texel_coefficient.empty();
+  std::vector<float> coefficient(sensors * columns, 0.0f);
+  progress.begin("daylight coefficients", columns);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, columns, 1), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t c = r.begin(); c < r.end(); ++c) {
+      const std::vector<float> direct = column_direct(y, response, suns, annual.bin_sun_rays, c);
+      Progress quiet;
+      const RadiositySolution solution =
+          solve_radiosity(patches, light_between.transport, patch_means(patches, e, direct), options.solve, quiet);
+      const std::vector<Rgb> gathered = gathered_irradiance(patches, light_between.transport, solution.exitance);
+      if (texels)
+        for (size_t i = 0; i < n; ++i) {
+          const uint32_t p = patches.patch_of_element[i];
+          texel_coefficient[i * columns + c] = direct[i] + (p == UINT32_MAX ? 0.0f : float(photopic(gathered[p])));
+        }
+      for (size_t s = 0; s < sensors; ++s) {
+        Rgb sent{};
+        for (int64_t j : rays.hits[s]) {
+          const uint32_t p = patches.patch_of_element[size_t(j)];
+          const Rgb indirect = p == UINT32_MAX ? Rgb{} : gathered[p];
+          sent += e.reflectance[size_t(j)] * (Rgb{direct[size_t(j)], direct[size_t(j)], direct[size_t(j)]} + indirect);
+        }
+        coefficient[s * columns + c] = float(photopic(sent) / gather_rays);
+      }
+      progress.advance();
+    }
+  });
+  progress.end();
+  return coefficient;
+}
+
+// Every hour: the patches' luminance under its sky, summed with the coefficients into out.lux,
+// out.sun_lux and out.eye_sun_seen; each hour's bin luminances and sun (for the texel maps) into
+// `hour_luminance` and `hour_sun`.
+void hour_sums(const YearScene& y, const std::vector<Sensor>& sensors, const std::vector<SkyLight>& hours,
+               const BakeOptions& options, const YearSuns& suns, const SensorRays& rays,
+               const std::vector<float>& coefficient, std::vector<float>& hour_luminance, std::vector<float>& hour_sun,
+               AnnualDaylight& out, Progress& progress) {
+  const size_t bins = y.bins, columns = bins + suns.bin_of_column.size();
+  const uint32_t sun_rays = std::max<uint32_t>(1, options.sky.sun_rays);
+  std::vector<uint8_t> fine_used(y.fine.size(), 0);
+  for (const DirectSky& d : rays.seen_sky)
+    for (auto [q, w] : d.patches) fine_used[q] = 1;
+  out.lux.assign(hours.size() * sensors.size(), 0.0f);
+  out.sun_lux.assign(hours.size() * sensors.size(), 0.0f);
+  out.eye_sun_seen.assign(hours.size() * out.eyes, 0.0f);
+  hour_luminance.assign(hours.size() * bins, 0.0f);
+  hour_sun.assign(hours.size(), 0.0f);
+  progress.begin("hours", hours.size());
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, hours.size(), 8), [&](const tbb::blocked_range<size_t>& r) {
+    std::vector<double> fine_luminance(y.fine.size()), coarse(bins);
+    for (size_t h = r.begin(); h < r.end(); ++h) {
+      const SkyLight& hour = hours[h];
+      if (!hour.enabled) continue;
+      SkyLight shaped = hour;
+      shaped.up = options.sky.up, shaped.north = options.sky.north;
+      const SkyView view(shaped);
+      for (size_t q = 0; q < y.fine.size(); ++q) {
+        if (!fine_used[q]) continue;
+        double altitude = 0, azimuth = 0;
+        y.fine.centre(q, &altitude, &azimuth);
+        fine_luminance[q] = view.luminance(y.compass.direction(altitude, azimuth));
+      }
+      for (size_t p = 0; p + 1 < bins; ++p) coarse[p] = patch_luminance(y.sky, p, view, y.compass);
+      coarse[bins - 1] = view.luminance(y.compass.up * -1.0f);
+      const double sun = view.sun_up() ? hour.sun_illuminance : 0.0;
+      for (size_t b = 0; b < bins; ++b) hour_luminance[h * bins + b] = float(coarse[b]);
+      hour_sun[h] = suns.columns_of_hour[h].empty() ? 0.0f : float(sun);
+      for (size_t s = 0; s < sensors.size(); ++s) {
+        double lux = rays.seen_sky[s].ground * coarse[bins - 1];
+        for (auto [q, w] : rays.seen_sky[s].patches) lux += w * fine_luminance[q];
+        const float* c = &coefficient[s * columns];
+        for (size_t b = 0; b < bins; ++b) lux += c[b] * coarse[b];
+        if (sun > 0 && !suns.columns_of_hour[h].empty()) {
+          const double direct = sun * direct_sun(sensors[s], s, view, y.surface, y.tracer, sun_rays, y.seed);
+          out.sun_lux[h * sensors.size() + s] = float(direct);
+          lux += direct;
+          for (auto [column, weight] : suns.columns_of_hour[h]) lux += sun * weight * c[bins + column];
+        }
+        out.lux[h * sensors.size() + s] = float(lux);
+      }
+      for (size_t k = 0; k < out.eyes && sun > 0; ++k)
+        out.eye_sun_seen[h * out.eyes + k] =
+            float(sun_seen(sensors[sensors.size() - out.eyes + k], view, y.surface, y.tracer, sun_rays, y.seed));
+    }
+    progress.advance(r.size());
+  });
+  progress.end();
+}
+
+// The eyes' columns (the last out.eyes of `sensors` of every hour) moved out of the sensors' series
+// into out.eye_lux.
+void split_off_eyes(size_t sensors, AnnualDaylight& out) {
+  if (out.eyes == 0) return;
+  const size_t listed = out.sensors.size();
+  std::vector<float> lux, sun_lux;
+  out.eye_lux.resize(out.hours * out.eyes);
+  for (size_t h = 0; h < out.hours; ++h) {
+    const float* row = &out.lux[h * sensors];
+    lux.insert(lux.end(), row, row + listed);
+    sun_lux.insert(sun_lux.end(), &out.sun_lux[h * sensors], &out.sun_lux[h * sensors] + listed);
+    std::copy(row + listed, row + sensors, &out.eye_lux[h * out.eyes]);
+  }
+  out.lux = std::move(lux), out.sun_lux = std::move(sun_lux);
+}
+
 }  // namespace
 
 AnnualDaylight annual_daylight(const Scene& scene, const Atlas& atlas, const BakeOptions& options,
@@ -173,196 +418,38 @@ AnnualDaylight annual_daylight(const Scene& scene, const Atlas& atlas, const Bak
   std::vector<Sensor> sensors = out.sensors;
   for (const EyeView& eye : options.views) sensors.push_back({eye.position, normalize(eye.direction)});
   out.eyes = options.views.size();
-  const Compass compass(options.sky);
-  const SkyPatches sky(annual.sky_subdivision), fine(annual.direct_subdivision), sun_bins(annual.sun_subdivision);
-  const uint64_t seed = options.seed;
-  const size_t n = e.size(), bins = sky.size() + 1;  // the sky's patches, then the ground
-  const uint32_t rays = std::max<uint32_t>(1, options.sky.rays), sun_rays = std::max<uint32_t>(1, options.sky.sun_rays);
+  const SkyPatches sky(annual.sky_subdivision);
+  const YearScene year{e,   surface, tracer, Compass(options.sky), sky, SkyPatches(annual.direct_subdivision),
+                       SkyPatches(annual.sun_subdivision), sky.size() + 1, options.seed};
 
-  // Each element's sky, by the rays the sky's irradiance casts: lux per cd/m2 of each bin.
-  std::vector<float> response(n * bins, 0.0f);
-  progress.begin("sky patches", n);
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 64), [&](const tbb::blocked_range<size_t>& r) {
-    for (size_t i = r.begin(); i < r.end(); ++i) {
-      if (!e.valid(i)) continue;
-      const Vec3 ng = surface.normal[e.triangle[i]];
-      Rng rng(seed, Stream::Sky, i);
-      const SkyRayPatterns pattern(rng);
-      for (uint32_t k = 0; k < rays; ++k) {
-        const Vec3 origin = footprint_point(e, surface, i, cmj_sample(k, rays, pattern.origin)) + ng * e.offset[i];
-        const Vec3 d = hemisphere_direction(e.normal[i], ng, cmj_sample(k, rays, pattern.direction));
-        const float passes = tracer.transmittance(origin, d, 0.0f, INFINITY);
-        if (!(passes > 0)) continue;
-        const size_t bin = dot(d, compass.up) > 0 ? compass.patch(sky, d) : bins - 1;
-        response[i * bins + bin] += float(M_PI) * passes / float(rays);
-      }
-    }
-    progress.advance(r.size());
-  });
-  progress.end();
-
+  const std::vector<float> response = sky_response(year, std::max<uint32_t>(1, options.sky.rays), progress);
   // One set of patches and form factors for every sky: their rays weighted by a uniform sky's light.
-  std::vector<Rgb> uniform(n);
-  for (size_t i = 0; i < n; ++i) {
+  std::vector<Rgb> uniform(e.size());
+  for (size_t i = 0; i < e.size(); ++i) {
     float sum = 0;
-    for (size_t b = 0; b < bins; ++b) sum += response[i * bins + b];
+    for (size_t b = 0; b < year.bins; ++b) sum += response[i * year.bins + b];
     uniform[i] = Rgb{sum, sum, sum};
   }
   const Interreflection light_between = solve_interreflection(e, surface, tracer, uniform, options.patches, options.form_factors,
-                                                              SubdivisionOptions{}, options.solve, seed, progress);
-  const Patches& patches = light_between.patches;
-
-  // The sun bins around the year's suns, each solved once.
-  std::vector<SunColumns> sun_columns_of_hour(hours.size());
-  std::map<size_t, size_t> solved_bin;  // bin of sun_bins -> column
-  for (size_t h = 0; h < hours.size(); ++h) {
-    const SkyLight& hour = hours[h];
-    if (!hour.enabled || !(hour.sun_illuminance > 0) || !(hour.sun_zenith < M_PI / 2)) continue;
-    for (auto [bin, weight] : sun_bins.interpolation(M_PI / 2 - hour.sun_zenith, hour.sun_azimuth))
-      if (weight > 1e-6) sun_columns_of_hour[h].push_back({solved_bin.emplace(bin, solved_bin.size()).first->second, float(weight)});
-  }
-  std::vector<size_t> sun_bin_list(solved_bin.size());
-  for (auto [bin, column] : solved_bin) sun_bin_list[column] = bin;
-
-  // What each sensor's gather rays strike, and the sky it sees itself.
-  const uint32_t gather_rays = rays_per_batch(options.sensor.rays) * kSensorBatches;
-  std::vector<std::vector<int64_t>> hits(sensors.size());
-  std::vector<DirectSky> seen_sky(sensors.size());
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, sensors.size(), 4), [&](const tbb::blocked_range<size_t>& r) {
-    for (size_t s = r.begin(); s < r.end(); ++s) {
-      hits[s] = sensor_gather_hits(sensors[s], s, e, surface, tracer, options.sensor.rays, seed).elements;
-      seen_sky[s] = direct_sky(sensors[s], s, fine, compass, surface, tracer, portals, options.sensor.sky_rays, seed);
-    }
-  });
-
-  // One solve per sky patch, the ground and each sun bin: the coefficients of what the surfaces
-  // send each sensor, lux per cd/m2 (sky, ground) or per lux of direct normal sun.
-  const size_t columns = bins + sun_bin_list.size();
-  std::vector<float> coefficient(sensors.size() * columns, 0.0f);
-  // Per element, what each column brings it (lux per unit), when texel maps are asked for.
+                                                              SubdivisionOptions{}, options.solve, options.seed, progress);
+  const YearSuns suns = year_suns(hours, year.sun_bins);
+  const SensorRays rays = sensor_rays(year, sensors, portals, options);
+  const size_t columns = year.bins + suns.bin_of_column.size();
   const bool texels = !annual.occupied.empty();
-  std::vector<float> texel_coefficient(texels ? n * columns : 0, 0.0f);
-  progress.begin("daylight coefficients", columns);
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, columns, 1), [&](const tbb::blocked_range<size_t>& r) {
-    for (size_t c = r.begin(); c < r.end(); ++c) {
-      std::vector<float> direct(n, 0.0f);
-      if (c < bins) {
-        for (size_t i = 0; i < n; ++i) direct[i] = response[i * bins + c];
-      } else {
-        double altitude = 0, azimuth = 0;
-        sun_bins.centre(sun_bin_list[c - bins], &altitude, &azimuth);
-        const Vec3 d = compass.direction(altitude, azimuth);
-        const uint32_t k_rays = std::max<uint32_t>(1, annual.bin_sun_rays);
-        for (size_t i = 0; i < n; ++i) {
-          if (!e.valid(i)) continue;
-          const Vec3 ng = surface.normal[e.triangle[i]];
-          const float incidence = dot(e.normal[i], d);
-          if (!(incidence > 0) || !(dot(ng, d) > 0)) continue;
-          Rng rng(seed, Stream::Sky, uint64_t(c) << 40 ^ i);
-          const uint32_t pattern = rng.next_u32();
-          float passes = 0;
-          for (uint32_t k = 0; k < k_rays; ++k)
-            passes += tracer.transmittance(footprint_point(e, surface, i, cmj_sample(k, k_rays, pattern)) + ng * e.offset[i],
-                                           d, 0.0f, INFINITY);
-          direct[i] = incidence * passes / float(k_rays);
-        }
-      }
-      std::vector<Rgb> patch_direct(patches.size(), Rgb{});
-      for (size_t p = 0; p < patches.size(); ++p) {
-        double total = 0;
-        for (uint32_t k = patches.first_member[p]; k < patches.first_member[p + 1]; ++k)
-          total += double(direct[patches.members[k]]) * e.area[patches.members[k]];
-        const float mean = patches.area[p] > 0 ? float(total / patches.area[p]) : 0.0f;
-        patch_direct[p] = Rgb{mean, mean, mean};
-      }
-      Progress quiet;
-      const RadiositySolution solution = solve_radiosity(patches, light_between.transport, patch_direct, options.solve, quiet);
-      const std::vector<Rgb> gathered = gathered_irradiance(patches, light_between.transport, solution.exitance);
-      if (texels)
-        for (size_t i = 0; i < n; ++i) {
-          const uint32_t p = patches.patch_of_element[i];
-          texel_coefficient[i * columns + c] = direct[i] + (p == UINT32_MAX ? 0.0f : float(photopic(gathered[p])));
-        }
-      for (size_t s = 0; s < sensors.size(); ++s) {
-        Rgb sent{};
-        for (int64_t j : hits[s]) {
-          const uint32_t p = patches.patch_of_element[size_t(j)];
-          const Rgb indirect = p == UINT32_MAX ? Rgb{} : gathered[p];
-          sent += e.reflectance[size_t(j)] * (Rgb{direct[size_t(j)], direct[size_t(j)], direct[size_t(j)]} + indirect);
-        }
-        coefficient[s * columns + c] = float(photopic(sent) / gather_rays);
-      }
-      progress.advance();
-    }
-  });
-  progress.end();
+  std::vector<float> texel_coefficient(texels ? e.size() * columns : 0, 0.0f);
+  const std::vector<float> coefficient =
+      daylight_coefficients(year, light_between, response, suns, rays, options, annual, texel_coefficient, progress);
 
   out.hours = hours.size();
-  out.sky_patches = bins, out.sun_bins = sun_bin_list.size();
+  out.sky_patches = year.bins, out.sun_bins = suns.bin_of_column.size();
   out.coefficient_seconds = seconds_since(started);
   const auto hours_started = std::chrono::steady_clock::now();
-
-  // Every hour: the patches' luminance under its sky, summed with the coefficients.
-  std::vector<uint8_t> fine_used(fine.size(), 0);
-  for (const DirectSky& d : seen_sky)
-    for (auto [q, w] : d.patches) fine_used[q] = 1;
-  out.lux.assign(hours.size() * sensors.size(), 0.0f);
-  out.sun_lux.assign(hours.size() * sensors.size(), 0.0f);
-  out.eye_sun_seen.assign(hours.size() * out.eyes, 0.0f);
-  std::vector<float> hour_luminance(hours.size() * bins, 0.0f), hour_sun(hours.size(), 0.0f);  // for the texels
-  progress.begin("hours", hours.size());
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, hours.size(), 8), [&](const tbb::blocked_range<size_t>& r) {
-    std::vector<double> fine_luminance(fine.size()), coarse(bins);
-    for (size_t h = r.begin(); h < r.end(); ++h) {
-      const SkyLight& hour = hours[h];
-      if (!hour.enabled) continue;
-      SkyLight shaped = hour;
-      shaped.up = options.sky.up, shaped.north = options.sky.north;
-      const SkyView view(shaped);
-      for (size_t q = 0; q < fine.size(); ++q) {
-        if (!fine_used[q]) continue;
-        double altitude = 0, azimuth = 0;
-        fine.centre(q, &altitude, &azimuth);
-        fine_luminance[q] = view.luminance(compass.direction(altitude, azimuth));
-      }
-      for (size_t p = 0; p + 1 < bins; ++p) coarse[p] = patch_luminance(sky, p, view, compass);
-      coarse[bins - 1] = view.luminance(compass.up * -1.0f);
-      const double sun = view.sun_up() ? hour.sun_illuminance : 0.0;
-      for (size_t b = 0; b < bins; ++b) hour_luminance[h * bins + b] = float(coarse[b]);
-      hour_sun[h] = sun_columns_of_hour[h].empty() ? 0.0f : float(sun);
-      for (size_t s = 0; s < sensors.size(); ++s) {
-        double lux = seen_sky[s].ground * coarse[bins - 1];
-        for (auto [q, w] : seen_sky[s].patches) lux += w * fine_luminance[q];
-        const float* c = &coefficient[s * columns];
-        for (size_t b = 0; b < bins; ++b) lux += c[b] * coarse[b];
-        if (sun > 0 && !sun_columns_of_hour[h].empty()) {
-          const double direct = sun * direct_sun(sensors[s], s, view, surface, tracer, sun_rays, seed);
-          out.sun_lux[h * sensors.size() + s] = float(direct);
-          lux += direct;
-          for (auto [column, weight] : sun_columns_of_hour[h]) lux += sun * weight * c[bins + column];
-        }
-        out.lux[h * sensors.size() + s] = float(lux);
-      }
-      for (size_t k = 0; k < out.eyes && sun > 0; ++k)
-        out.eye_sun_seen[h * out.eyes + k] = float(sun_seen(sensors[sensors.size() - out.eyes + k], view, surface, tracer, sun_rays, seed));
-    }
-    progress.advance(r.size());
-  });
-  progress.end();
-  if (texels) texel_maps(e, surface, texel_coefficient, columns, bins, hour_luminance, hour_sun, sun_columns_of_hour, hours, annual, out);
-  // The eyes' columns out of the sensors' series.
-  const size_t listed = out.sensors.size();
-  if (out.eyes > 0) {
-    std::vector<float> lux, sun_lux;
-    out.eye_lux.resize(hours.size() * out.eyes);
-    for (size_t h = 0; h < hours.size(); ++h) {
-      const float* row = &out.lux[h * sensors.size()];
-      lux.insert(lux.end(), row, row + listed);
-      sun_lux.insert(sun_lux.end(), &out.sun_lux[h * sensors.size()], &out.sun_lux[h * sensors.size()] + listed);
-      std::copy(row + listed, row + sensors.size(), &out.eye_lux[h * out.eyes]);
-    }
-    out.lux = std::move(lux), out.sun_lux = std::move(sun_lux);
-  }
+  std::vector<float> hour_luminance, hour_sun;  // for the texels
+  hour_sums(year, sensors, hours, options, suns, rays, coefficient, hour_luminance, hour_sun, out, progress);
+  if (texels)
+    texel_maps(e, surface, texel_coefficient, columns, year.bins, hour_luminance, hour_sun, suns.columns_of_hour, hours,
+               annual, out);
+  split_off_eyes(sensors.size(), out);
   out.hours_seconds = seconds_since(hours_started);
   return out;
 }
