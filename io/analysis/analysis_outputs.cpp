@@ -133,119 +133,124 @@ std::vector<Sensor> read_sensor_csv(const std::string& path, size_t max_points) 
   return sensors;
 }
 
-AnalysisFiles write_analysis(const BakeResult& result, const std::string& folder, const std::string& name,
-                             const AnalysisOptions& options) {
-  AnalysisFiles out;
-  const double to_percent = options.daylight_factor_reference > 0 ? 100 / options.daylight_factor_reference : 0;
+namespace {
+
+// sensors.csv, and the summaries of the listed sensors (the work plane's come after them).
+void write_sensors(const BakeResult& result, const std::vector<double>& error, double to_percent,
+                   const std::string& folder, AnalysisFiles& out) {
   const std::vector<double>& lux = result.sensor_lux;
-  // The readings' noise, when the bake states it (sensor_points.h), else none.
-  std::vector<double> error = result.sensor_standard_error;
-  error.resize(lux.size(), 0.0);
-  if (!result.sensors.empty()) {
-    std::ofstream csv(folder + "/sensors.csv");
-    csv << "x,y,z,nx,ny,nz,lux" << (to_percent > 0 ? ",daylight_factor_percent" : "") << ",lux_standard_error"
-        << (to_percent > 0 ? ",daylight_factor_standard_error_percent" : "") << "\n";
-    char row[256];
-    for (size_t k = 0; k < result.sensors.size(); ++k) {
-      const Sensor& s = result.sensors[k];
-      std::snprintf(row, sizeof row, "%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.6g", s.position.x, s.position.y, s.position.z,
-                    s.normal.x, s.normal.y, s.normal.z, lux[k]);
-      csv << row;
-      if (to_percent > 0) {
-        std::snprintf(row, sizeof row, ",%.6g", lux[k] * to_percent);
-        csv << row;
-      }
-      std::snprintf(row, sizeof row, ",%.3g", error[k]);
-      csv << row;
-      if (to_percent > 0) {
-        std::snprintf(row, sizeof row, ",%.3g", error[k] * to_percent);
-        csv << row;
-      }
-      csv << "\n";
-    }
-    close_written(csv, folder + "/sensors.csv");
-    out.files.push_back("sensors.csv");
-    // The listed sensors come first, the work plane's after them; each set has its own summary.
-    const ptrdiff_t listed_count = ptrdiff_t(lux.size() - result.work_plane.sensors.size());
-    const std::vector<double> listed(lux.begin(), lux.begin() + listed_count);
-    const std::vector<double> listed_error(error.begin(), error.begin() + listed_count);
-    out.sensors = summarise(listed, listed_error);
+  std::ofstream csv(folder + "/sensors.csv");
+  csv << "x,y,z,nx,ny,nz,lux" << (to_percent > 0 ? ",daylight_factor_percent" : "") << ",lux_standard_error"
+      << (to_percent > 0 ? ",daylight_factor_standard_error_percent" : "") << "\n";
+  char row[256];
+  for (size_t k = 0; k < result.sensors.size(); ++k) {
+    const Sensor& s = result.sensors[k];
+    std::snprintf(row, sizeof row, "%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.6g", s.position.x, s.position.y, s.position.z,
+                  s.normal.x, s.normal.y, s.normal.z, lux[k]);
+    csv << row;
     if (to_percent > 0) {
-      std::vector<double> percent(listed), percent_error(listed_error);
-      for (double& v : percent) v *= to_percent;
-      for (double& v : percent_error) v *= to_percent;
-      out.sensors_daylight_factor = summarise(percent, percent_error);
+      std::snprintf(row, sizeof row, ",%.6g", lux[k] * to_percent);
+      csv << row;
     }
+    std::snprintf(row, sizeof row, ",%.3g", error[k]);
+    csv << row;
+    if (to_percent > 0) {
+      std::snprintf(row, sizeof row, ",%.3g", error[k] * to_percent);
+      csv << row;
+    }
+    csv << "\n";
   }
-  const WorkPlane& plane = result.work_plane;
-  if (!plane.sensors.empty()) {
-    out.outdoor_points = plane.outdoor_points;
-    out.sliver_points = plane.sliver_points;
-    std::vector<double> percent(lux), percent_error(error);
+  close_written(csv, folder + "/sensors.csv");
+  out.files.push_back("sensors.csv");
+  // The listed sensors come first, the work plane's after them; each set has its own summary.
+  const ptrdiff_t listed_count = ptrdiff_t(lux.size() - result.work_plane.sensors.size());
+  const std::vector<double> listed(lux.begin(), lux.begin() + listed_count);
+  const std::vector<double> listed_error(error.begin(), error.begin() + listed_count);
+  out.sensors = summarise(listed, listed_error);
+  if (to_percent > 0) {
+    std::vector<double> percent(listed), percent_error(listed_error);
     for (double& v : percent) v *= to_percent;
     for (double& v : percent_error) v *= to_percent;
-    auto readings_of = [&](const std::vector<int32_t>& sensors, const std::vector<double>& values, const std::vector<double>& errors) {
-      std::vector<double> readings, reading_errors;
-      for (int32_t k : sensors)
-        if (k >= 0) readings.push_back(values[size_t(k)]), reading_errors.push_back(errors[size_t(k)]);
-      return summarise(readings, reading_errors);
-    };
-    std::vector<int32_t> all;
-    for (const WorkPlaneStorey& storey : plane.storeys) {
-      StoreyReadings readings;
-      readings.floor_height = storey.floor_height;
-      readings.lux = readings_of(storey.sensor_at, lux, error);
-      if (to_percent > 0) readings.daylight_factor = readings_of(storey.sensor_at, percent, percent_error);
-      out.storeys.push_back(readings);
-      all.insert(all.end(), storey.sensor_at.begin(), storey.sensor_at.end());
-    }
-    out.work_plane = readings_of(all, lux, error);
-    FalseColourScale scale = options.scale;
-    scale.unit = "lx";
-    const std::vector<std::string> maps = write_work_plane_maps(folder, "work_plane", plane, lux, scale);
-    std::vector<std::string> percent_maps;
-    if (to_percent > 0) {
-      out.work_plane_daylight_factor = readings_of(all, percent, percent_error);
-      scale.unit = "%";
-      scale.max = 0;  // the lux scale's max means nothing in percent
-      percent_maps = write_work_plane_maps(folder, "work_plane_daylight_factor", plane, percent, scale);
-    }
-    for (size_t s = 0; s < out.storeys.size(); ++s) {
-      out.storeys[s].maps.push_back(maps[s]);
-      if (!percent_maps.empty()) out.storeys[s].maps.push_back(percent_maps[s]);
-      out.files.insert(out.files.end(), out.storeys[s].maps.begin(), out.storeys[s].maps.end());
-    }
-    std::ofstream csv(folder + "/work_plane_rooms.csv");
-    csv << "storey,room,points,area_m2,centre_x,centre_z,min_lx,mean_lx,max_lx,uniformity"
-        << (to_percent > 0 ? ",daylight_factor_min_percent,daylight_factor_mean_percent,daylight_factor_max_percent" : "")
-        << "\n";
-    for (const WorkPlaneRoom& room : plane.rooms) {
-      RoomReadings r;
-      r.storey = room.storey, r.number = room.number;
-      r.area = double(room.sensors.size()) * plane.spacing * plane.spacing;
-      for (int32_t k : room.sensors)
-        r.centre_x += result.sensors[size_t(k)].position.x, r.centre_z += result.sensors[size_t(k)].position.z;
-      r.centre_x /= double(room.sensors.size()), r.centre_z /= double(room.sensors.size());
-      r.lux = readings_of(room.sensors, lux, error);
-      if (to_percent > 0) r.daylight_factor = readings_of(room.sensors, percent, percent_error);
-      char row[320];
-      std::snprintf(row, sizeof row, "%d,%d,%zu,%.3f,%.3f,%.3f,%.6g,%.6g,%.6g,%.4f", r.storey + 1, r.number, r.lux.count,
-                    r.area, r.centre_x, r.centre_z, r.lux.min, r.lux.mean, r.lux.max, r.lux.uniformity);
-      csv << row;
-      if (to_percent > 0) {
-        std::snprintf(row, sizeof row, ",%.4g,%.4g,%.4g", r.daylight_factor.min, r.daylight_factor.mean, r.daylight_factor.max);
-        csv << row;
-      }
-      csv << "\n";
-      out.rooms.push_back(r);
-    }
-    close_written(csv, folder + "/work_plane_rooms.csv");
-    out.files.push_back("work_plane_rooms.csv");
+    out.sensors_daylight_factor = summarise(percent, percent_error);
   }
+}
+
+// The work plane's summaries per storey, room and in all, its maps and work_plane_rooms.csv.
+void write_work_plane(const BakeResult& result, const std::vector<double>& error, double to_percent,
+                      const FalseColourScale& map_scale, const std::string& folder, AnalysisFiles& out) {
+  const std::vector<double>& lux = result.sensor_lux;
+  const WorkPlane& plane = result.work_plane;
+  out.outdoor_points = plane.outdoor_points;
+  out.sliver_points = plane.sliver_points;
+  std::vector<double> percent(lux), percent_error(error);
+  for (double& v : percent) v *= to_percent;
+  for (double& v : percent_error) v *= to_percent;
+  auto readings_of = [&](const std::vector<int32_t>& sensors, const std::vector<double>& values, const std::vector<double>& errors) {
+    std::vector<double> readings, reading_errors;
+    for (int32_t k : sensors)
+      if (k >= 0) readings.push_back(values[size_t(k)]), reading_errors.push_back(errors[size_t(k)]);
+    return summarise(readings, reading_errors);
+  };
+  std::vector<int32_t> all;
+  for (const WorkPlaneStorey& storey : plane.storeys) {
+    StoreyReadings readings;
+    readings.floor_height = storey.floor_height;
+    readings.lux = readings_of(storey.sensor_at, lux, error);
+    if (to_percent > 0) readings.daylight_factor = readings_of(storey.sensor_at, percent, percent_error);
+    out.storeys.push_back(readings);
+    all.insert(all.end(), storey.sensor_at.begin(), storey.sensor_at.end());
+  }
+  out.work_plane = readings_of(all, lux, error);
+  FalseColourScale scale = map_scale;
+  scale.unit = "lx";
+  const std::vector<std::string> maps = write_work_plane_maps(folder, "work_plane", plane, lux, scale);
+  std::vector<std::string> percent_maps;
+  if (to_percent > 0) {
+    out.work_plane_daylight_factor = readings_of(all, percent, percent_error);
+    scale.unit = "%";
+    scale.max = 0;  // the lux scale's max means nothing in percent
+    percent_maps = write_work_plane_maps(folder, "work_plane_daylight_factor", plane, percent, scale);
+  }
+  for (size_t s = 0; s < out.storeys.size(); ++s) {
+    out.storeys[s].maps.push_back(maps[s]);
+    if (!percent_maps.empty()) out.storeys[s].maps.push_back(percent_maps[s]);
+    out.files.insert(out.files.end(), out.storeys[s].maps.begin(), out.storeys[s].maps.end());
+  }
+  std::ofstream csv(folder + "/work_plane_rooms.csv");
+  csv << "storey,room,points,area_m2,centre_x,centre_z,min_lx,mean_lx,max_lx,uniformity"
+      << (to_percent > 0 ? ",daylight_factor_min_percent,daylight_factor_mean_percent,daylight_factor_max_percent" : "")
+      << "\n";
+  for (const WorkPlaneRoom& room : plane.rooms) {
+    RoomReadings r;
+    r.storey = room.storey, r.number = room.number;
+    r.area = double(room.sensors.size()) * plane.spacing * plane.spacing;
+    for (int32_t k : room.sensors)
+      r.centre_x += result.sensors[size_t(k)].position.x, r.centre_z += result.sensors[size_t(k)].position.z;
+    r.centre_x /= double(room.sensors.size()), r.centre_z /= double(room.sensors.size());
+    r.lux = readings_of(room.sensors, lux, error);
+    if (to_percent > 0) r.daylight_factor = readings_of(room.sensors, percent, percent_error);
+    char row[320];
+    std::snprintf(row, sizeof row, "%d,%d,%zu,%.3f,%.3f,%.3f,%.6g,%.6g,%.6g,%.4f", r.storey + 1, r.number, r.lux.count,
+                  r.area, r.centre_x, r.centre_z, r.lux.min, r.lux.mean, r.lux.max, r.lux.uniformity);
+    csv << row;
+    if (to_percent > 0) {
+      std::snprintf(row, sizeof row, ",%.4g,%.4g,%.4g", r.daylight_factor.min, r.daylight_factor.mean, r.daylight_factor.max);
+      csv << row;
+    }
+    csv << "\n";
+    out.rooms.push_back(r);
+  }
+  close_written(csv, folder + "/work_plane_rooms.csv");
+  out.files.push_back("work_plane_rooms.csv");
+}
+
+// Each eye's fisheye and perspective luminance, as EXR and false colour.
+void write_views(const BakeResult& result, const std::vector<EyeView>& eyes, const std::string& folder,
+                 AnalysisFiles& out) {
   for (size_t v = 0; v < result.views.size(); ++v) {
     const FisheyeImage& image = result.views[v];
     const Glare& glare = result.glare[v];
-    out.views.push_back({options.views[v], glare});
+    out.views.push_back({eyes[v], glare});
     const std::string exr = "view_" + std::to_string(v) + ".exr", png = "view_" + std::to_string(v) + ".png";
     write_exr(folder + "/" + exr, grey_page(image.size, image.size, image.luminance));
     FalseColourScale scale;
@@ -268,8 +273,13 @@ AnalysisFiles write_analysis(const BakeResult& result, const std::string& folder
     write_false_colour(folder + "/" + flat_png, flat.luminance, flat.width, flat.height, scale, 1);
     out.files.insert(out.files.end(), {flat_exr, flat_png});
   }
-  for (size_t p = 0; p < result.pages.size(); ++p) {
-    const LightmapPage& page = result.pages[p];
+}
+
+// The pages in false colour, and in daylight factors when the pages hold lux under an overcast sky.
+void write_page_maps(const std::vector<LightmapPage>& pages, const std::string& name, const AnalysisOptions& options,
+                     double to_percent, const std::string& folder, AnalysisFiles& out) {
+  for (size_t p = 0; p < pages.size(); ++p) {
+    const LightmapPage& page = pages[p];
     if (options.false_colour_pages) {
       FalseColourScale scale = options.scale;
       scale.unit = options.lightmap_is_irradiance ? "lx" : "lm/m2";
@@ -286,6 +296,21 @@ AnalysisFiles write_analysis(const BakeResult& result, const std::string& folder
       out.files.push_back(file);
     }
   }
+}
+
+}  // namespace
+
+AnalysisFiles write_analysis(const BakeResult& result, const std::string& folder, const std::string& name,
+                             const AnalysisOptions& options) {
+  AnalysisFiles out;
+  const double to_percent = options.daylight_factor_reference > 0 ? 100 / options.daylight_factor_reference : 0;
+  // The readings' noise, when the bake states it (sensor_points.h), else none.
+  std::vector<double> error = result.sensor_standard_error;
+  error.resize(result.sensor_lux.size(), 0.0);
+  if (!result.sensors.empty()) write_sensors(result, error, to_percent, folder, out);
+  if (!result.work_plane.sensors.empty()) write_work_plane(result, error, to_percent, options.scale, folder, out);
+  write_views(result, options.views, folder, out);
+  write_page_maps(result.pages, name, options, to_percent, folder, out);
   return out;
 }
 
