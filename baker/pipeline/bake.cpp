@@ -402,6 +402,96 @@ void compute_radiosity(const Scene& scene, const Elements& elements, const Surfa
   }
 }
 
+// The loader holds each material's luminance to kMaxLuminance; the emission scale must not
+// multiply it past that.
+void refuse_overbright_materials(const Scene& scene, float emission_scale) {
+  for (const Material& m : scene.materials) {
+    const double luminance = double(max_component(m.emissive)) * m.emissive_strength * emission_scale;
+    if (luminance > kMaxLuminance) {
+      char text[96];
+      std::snprintf(text, sizeof text, "' would glow at %.3g cd/m2 under the emission scale %g, above the %g",
+                    luminance, double(emission_scale), kMaxLuminance);
+      throw InputError("material '" + clipped(m.name) + text + " radbake bakes");
+    }
+  }
+}
+
+// The reference's way: every light and every bounce by the path tracer, whatever the plan says.
+void compute_path_traced(const Scene& scene, const Elements& elements, const Surface& surface,
+                         const MaterialSampler& materials, const RayTracer& tracer, const BakeOptions& options,
+                         const FiniteCheckContext& checked, Progress& progress, BakeResult& result) {
+  BakeReport& report = result.report;
+  StageClock clock(report.stage_times);
+  PathTraced traced = clock.run("path tracing", [&] {
+    return path_trace(elements, surface, materials, scene.lights, &options.sky, tracer, options.path_trace,
+                      options.seed, progress);
+  });
+  check_element_values("path tracing", traced.irradiance, checked);
+  result.irradiance = std::move(traced.irradiance);
+  result.standard_error = std::move(traced.standard_error);
+  result.patch_of_element.assign(elements.size(), UINT32_MAX);
+  report.path_samples = traced.samples;
+  report.path_relative_noise = traced.relative_noise;
+  report.path_mean_vertices = traced.mean_path_vertices;
+  report.plan.push_back({"method", "path tracing",
+                         "every light and every bounce, whatever the plan would leave out: the reference"});
+}
+
+// What is read from the finished light, by the surfaces' `exitance` (lm/m2): the sensors and the
+// work plane, the eyes' views and glare, the light probes.
+void take_readings(const Scene& scene, const Elements& elements, const Surface& surface, const MaterialSampler& materials,
+                   const RayTracer& tracer, const BakeOptions& options, const std::vector<Rgb>& exitance,
+                   Progress& progress, BakeResult& result) {
+  BakeReport& report = result.report;
+  StageClock clock(report.stage_times);
+  if (!options.sensors.empty() || options.work_plane.enabled) {
+    result.sensors = options.sensors;
+    if (options.work_plane.enabled) {
+      shift_sensor_indices(result.work_plane, int32_t(options.sensors.size()));
+      result.sensors.insert(result.sensors.end(), result.work_plane.sensors.begin(), result.work_plane.sensors.end());
+    }
+    SensorReadings readings = clock.run("sensors", [&] {
+      if (options.method != Method::PathTrace)
+        return sensor_illuminance(result.sensors, scene.lights, elements, exitance, surface, tracer, options.sky,
+                                  options.sky.enabled ? SkyPortals(surface, materials) : SkyPortals(), options.sensor,
+                                  options.seed, progress);
+      // The reference: whole paths from each sensor, as many as its sky rays, sharing nothing
+      // with the sensors' own sampling.
+      std::vector<Vec3> points, normals;
+      for (const Sensor& s : result.sensors)
+        points.push_back(sensor_origin(s.position, s.normal, surface.scene_extent)), normals.push_back(s.normal);
+      PathTracedPoints traced = path_trace_points(points, normals, elements, surface, materials, scene.lights, &options.sky,
+                                                  tracer, options.sensor.sky_rays, options.seed);
+      SensorReadings out;
+      for (const Rgb& e : traced.irradiance) out.lux.push_back(photopic(e));
+      out.standard_error = std::move(traced.standard_error);
+      return out;
+    });
+    result.sensor_lux = std::move(readings.lux);
+    result.sensor_standard_error = std::move(readings.standard_error);
+  }
+  if (!options.views.empty()) {
+    clock.run("views", [&] {
+      for (const EyeView& eye : options.views) {
+        result.views.push_back(render_fisheye(eye, options.view, elements, exitance, surface, tracer, options.sky, options.seed));
+        result.glare.push_back(evaluate_glare(result.views.back()));
+        result.perspectives.push_back(render_perspective(eye, options.view, elements, exitance, surface, tracer, options.sky, options.seed));
+      }
+      return 0;
+    });
+  }
+  if (options.probes.enabled) {
+    result.probes = clock.run("light probes", [&] {
+      LightProbes probes = place_probes(surface, tracer, options.probes);
+      light_probes(probes, elements, exitance, surface, materials, scene.lights, options.sky, tracer, options.probes,
+                   options.seed, progress);
+      return probes;
+    });
+    report.light_probes = result.probes.probes.size();
+    report.light_probe_spacing = result.probes.spacing;
+  }
+}
+
 }  // namespace
 
 uint64_t peak_resident_bytes() {
@@ -454,17 +544,7 @@ BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& given
   if (options.threads > 0)
     thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, options.threads);
 
-  // The loader holds each material's luminance to kMaxLuminance; the emission scale must not
-  // multiply it past that.
-  for (const Material& m : scene.materials) {
-    const double luminance = double(max_component(m.emissive)) * m.emissive_strength * options.emission_scale;
-    if (luminance > kMaxLuminance) {
-      char text[96];
-      std::snprintf(text, sizeof text, "' would glow at %.3g cd/m2 under the emission scale %g, above the %g",
-                    luminance, double(options.emission_scale), kMaxLuminance);
-      throw InputError("material '" + clipped(m.name) + text + " radbake bakes");
-    }
-  }
+  refuse_overbright_materials(scene, options.emission_scale);
 
   Progress progress(on_progress);
   BakeResult result;
@@ -483,19 +563,7 @@ BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& given
   report.plan = plan.decisions;
   report.warnings = plan.warnings;
   if (options.method == Method::PathTrace) {
-    PathTraced traced = clock.run("path tracing", [&] {
-      return path_trace(elements, surface, materials, scene.lights, &options.sky, *tracer, options.path_trace,
-                        options.seed, progress);
-    });
-    check_element_values("path tracing", traced.irradiance, checked);
-    result.irradiance = std::move(traced.irradiance);
-    result.standard_error = std::move(traced.standard_error);
-    result.patch_of_element.assign(n, UINT32_MAX);
-    report.path_samples = traced.samples;
-    report.path_relative_noise = traced.relative_noise;
-    report.path_mean_vertices = traced.mean_path_vertices;
-    report.plan.push_back({"method", "path tracing",
-                           "every light and every bounce, whatever the plan would leave out: the reference"});
+    compute_path_traced(scene, elements, surface, materials, *tracer, options, checked, progress, result);
   } else {
     compute_radiosity(scene, elements, surface, materials, *tracer, options, plan, checked, progress, on_preview, result);
   }
@@ -525,54 +593,9 @@ BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& given
   result.vertex_values =
       clock.run("vertex values", [&] { return vertex_values(elements, surface, atlas, result.pages, stored); });
   check_vertex_values(result.vertex_values, scene);
-  if (!options.sensors.empty() || options.work_plane.enabled) {
-    result.sensors = options.sensors;
-    if (options.work_plane.enabled) {
-      shift_sensor_indices(result.work_plane, int32_t(options.sensors.size()));
-      result.sensors.insert(result.sensors.end(), result.work_plane.sensors.begin(), result.work_plane.sensors.end());
-    }
+  if (!options.sensors.empty() || options.work_plane.enabled || !options.views.empty() || options.probes.enabled) {
     const std::vector<Rgb> exitance = radiosity.empty() ? radiosity_of(elements, result.irradiance) : radiosity;
-    SensorReadings readings = clock.run("sensors", [&] {
-      if (options.method != Method::PathTrace)
-        return sensor_illuminance(result.sensors, scene.lights, elements, exitance, surface, *tracer, options.sky,
-                                  options.sky.enabled ? SkyPortals(surface, materials) : SkyPortals(), options.sensor,
-                                  options.seed, progress);
-      // The reference: whole paths from each sensor, as many as its sky rays, sharing nothing
-      // with the sensors' own sampling.
-      std::vector<Vec3> points, normals;
-      for (const Sensor& s : result.sensors)
-        points.push_back(sensor_origin(s.position, s.normal, surface.scene_extent)), normals.push_back(s.normal);
-      PathTracedPoints traced = path_trace_points(points, normals, elements, surface, materials, scene.lights, &options.sky,
-                                                  *tracer, options.sensor.sky_rays, options.seed);
-      SensorReadings out;
-      for (const Rgb& e : traced.irradiance) out.lux.push_back(photopic(e));
-      out.standard_error = std::move(traced.standard_error);
-      return out;
-    });
-    result.sensor_lux = std::move(readings.lux);
-    result.sensor_standard_error = std::move(readings.standard_error);
-  }
-  if (!options.views.empty()) {
-    const std::vector<Rgb> exitance = radiosity.empty() ? radiosity_of(elements, result.irradiance) : radiosity;
-    clock.run("views", [&] {
-      for (const EyeView& eye : options.views) {
-        result.views.push_back(render_fisheye(eye, options.view, elements, exitance, surface, *tracer, options.sky, options.seed));
-        result.glare.push_back(evaluate_glare(result.views.back()));
-        result.perspectives.push_back(render_perspective(eye, options.view, elements, exitance, surface, *tracer, options.sky, options.seed));
-      }
-      return 0;
-    });
-  }
-  if (options.probes.enabled) {
-    const std::vector<Rgb> exitance = radiosity.empty() ? radiosity_of(elements, result.irradiance) : radiosity;
-    result.probes = clock.run("light probes", [&] {
-      LightProbes probes = place_probes(surface, *tracer, options.probes);
-      light_probes(probes, elements, exitance, surface, materials, scene.lights, options.sky, *tracer, options.probes,
-                   options.seed, progress);
-      return probes;
-    });
-    report.light_probes = result.probes.probes.size();
-    report.light_probe_spacing = result.probes.spacing;
+    take_readings(scene, elements, surface, materials, *tracer, options, exitance, progress, result);
   }
   result.display_camera = clock.run("display camera", [&] { return display_camera(scene, surface, *tracer); });
   result.display_view = clock.run("display view", [&] { return display_view(scene, result.display_camera, surface, *tracer); });
