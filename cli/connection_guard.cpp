@@ -54,7 +54,11 @@ struct ConnectionGuard::State {
 
   ConnectionLimits limits;
   std::mutex mutex;
-  std::condition_variable jobs_changed;
+  std::condition_variable jobs_changed;  // the workers' alone
+  // The deadline thread's tick and its stop. It once waited on jobs_changed too, and a job's
+  // notify_one could wake it instead of a worker: the connection then waited for the next one (an
+  // install test's only request hung with all 128 workers idle).
+  std::condition_variable deadline_tick;
   std::deque<Job> jobs;
   std::map<int, Served> served;  // by peer port
   bool stopping = false;
@@ -118,7 +122,7 @@ struct ConnectionGuard::State {
   void enforce_deadlines() {
     std::unique_lock<std::mutex> lock(mutex);
     while (!stopping) {
-      jobs_changed.wait_for(lock, std::chrono::milliseconds(100));
+      deadline_tick.wait_for(lock, std::chrono::milliseconds(100));
       const Clock::time_point now = Clock::now();
       for (auto& [port, connection] : served)
         if (!connection.answering && now - connection.waiting_since > limits.header_deadline) {
@@ -149,6 +153,7 @@ struct ConnectionGuard::State {
       for (auto& [port, connection] : served) ::shutdown(connection.socket, SHUT_RDWR);
     }
     jobs_changed.notify_all();
+    deadline_tick.notify_all();
     for (std::thread& thread : threads) thread.join();
     threads.clear();
   }
