@@ -12,6 +12,7 @@
 #include "baker/pipeline/bake.h"
 #include "baker/surface/sampling.h"
 #include "baker/transport/patch_transport.h"
+#include "baker/transport/solve_columns.h"
 #include "base/progress.h"
 #include "daylight/sky_patches.h"
 
@@ -261,22 +262,32 @@ std::vector<float> column_direct(const YearScene& y, const std::vector<float>& r
 }
 
 // Each patch's area-weighted mean of its members' direct light.
-std::vector<Rgb> patch_means(const Patches& patches, const Elements& e, const std::vector<float>& direct) {
-  std::vector<Rgb> out(patches.size(), Rgb{});
+// Patch p's area-weighted mean of `direct`, per element, into column c of `patch_direct`.
+void patch_means(const Patches& patches, const Elements& e, const std::vector<float>& direct, size_t columns,
+                 size_t c, std::vector<float>& patch_direct) {
   for (size_t p = 0; p < patches.size(); ++p) {
     double total = 0;
     for (uint32_t k = patches.first_member[p]; k < patches.first_member[p + 1]; ++k)
       total += double(direct[patches.members[k]]) * e.area[patches.members[k]];
-    const float mean = patches.area[p] > 0 ? float(total / patches.area[p]) : 0.0f;
-    out[p] = Rgb{mean, mean, mean};
+    patch_direct[p * columns + c] = patches.area[p] > 0 ? float(total / patches.area[p]) : 0.0f;
   }
-  return out;
 }
 
-// One solve per sky patch, the ground and each sun bin: the coefficients of what the surfaces
-// send each sensor, lux per cd/m2 (sky, ground) or per lux of direct normal sun,
-// [sensor * columns + column]; and, when `texel_coefficient` is not empty, what each column brings
-// each element, [element * columns + column].
+// What a sensor's gather rays take from the elements they struck, per column: each one's rho
+// times `light` (lux), photopic, per gather ray.
+template <typename Light>
+float sent_to_sensor(const Elements& e, const std::vector<int64_t>& hits, uint32_t gather_rays, const Light& light) {
+  Rgb sent{};
+  for (int64_t j : hits) sent += e.reflectance[size_t(j)] * light(size_t(j));
+  return float(photopic(sent) / gather_rays);
+}
+
+// One radiosity solve per sky patch, the ground and each sun bin, all solved together
+// (solve_columns): the coefficients of what the surfaces send each sensor, lux per cd/m2 (sky,
+// ground) or per lux of direct normal sun, [sensor * columns + column]; and, when
+// `texel_coefficient` is not empty, what each column brings each element, [element * columns +
+// column]. Each column's direct light is found once: its share of the coefficients is kept, its
+// patch means go to the solve, and the light the surfaces pass on is added after.
 std::vector<float> daylight_coefficients(const YearScene& y, const Interreflection& light_between,
                                          const std::vector<float>& response, const YearSuns& suns,
                                          const SensorRays& rays, const BakeOptions& options,
@@ -287,30 +298,33 @@ std::vector<float> daylight_coefficients(const YearScene& y, const Interreflecti
   const size_t n = e.size(), sensors = rays.hits.size(), columns = y.bins + suns.bin_of_column.size();
   const uint32_t gather_rays = rays_per_batch(options.sensor.rays) * kSensorBatches;
   const bool texels = !texel_coefficient.empty();
-  std::vector<float> coefficient(sensors * columns, 0.0f);
+  std::vector<float> coefficient(sensors * columns, 0.0f), patch_direct(patches.size() * columns, 0.0f);
   progress.begin("daylight coefficients", columns);
   tbb::parallel_for(tbb::blocked_range<size_t>(0, columns, 1), [&](const tbb::blocked_range<size_t>& r) {
     for (size_t c = r.begin(); c < r.end(); ++c) {
       const std::vector<float> direct = column_direct(y, response, suns, annual.bin_sun_rays, c);
-      Progress quiet;
-      const RadiositySolution solution =
-          solve_radiosity(patches, light_between.transport, patch_means(patches, e, direct), options.solve, quiet);
-      const std::vector<Rgb> gathered = gathered_irradiance(patches, light_between.transport, solution.exitance);
+      patch_means(patches, e, direct, columns, c, patch_direct);
       if (texels)
-        for (size_t i = 0; i < n; ++i) {
-          const uint32_t p = patches.patch_of_element[i];
-          texel_coefficient[i * columns + c] = direct[i] + (p == UINT32_MAX ? 0.0f : float(photopic(gathered[p])));
-        }
-      for (size_t s = 0; s < sensors; ++s) {
-        Rgb sent{};
-        for (int64_t j : rays.hits[s]) {
-          const uint32_t p = patches.patch_of_element[size_t(j)];
-          const Rgb indirect = p == UINT32_MAX ? Rgb{} : gathered[p];
-          sent += e.reflectance[size_t(j)] * (Rgb{direct[size_t(j)], direct[size_t(j)], direct[size_t(j)]} + indirect);
-        }
-        coefficient[s * columns + c] = float(photopic(sent) / gather_rays);
-      }
+        for (size_t i = 0; i < n; ++i) texel_coefficient[i * columns + c] = direct[i];
+      for (size_t s = 0; s < sensors; ++s)
+        coefficient[s * columns + c] = sent_to_sensor(e, rays.hits[s], gather_rays, [&](size_t j) {
+          return Rgb{direct[j], direct[j], direct[j]};
+        });
       progress.advance();
+    }
+  });
+  const ColumnSolution solved = solve_columns(patches, light_between.transport, patch_direct, columns, options.solve);
+  auto gathered = [&](size_t i, size_t c) {
+    const uint32_t p = patches.patch_of_element[i];
+    return p == UINT32_MAX ? Rgb{} : solved.gathered[p * columns + c];
+  };
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, columns, 1), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t c = r.begin(); c < r.end(); ++c) {
+      if (texels)
+        for (size_t i = 0; i < n; ++i) texel_coefficient[i * columns + c] += float(photopic(gathered(i, c)));
+      for (size_t s = 0; s < sensors; ++s)
+        coefficient[s * columns + c] +=
+            sent_to_sensor(e, rays.hits[s], gather_rays, [&](size_t j) { return gathered(j, c); });
     }
   });
   progress.end();

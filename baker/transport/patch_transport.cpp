@@ -177,6 +177,24 @@ Enclosures find_enclosures(const PatchTransport& t) {
   return out;
 }
 
+IncomingRows incoming_rows(const Patches& patches, const PatchTransport& t) {
+  const size_t n = patches.size();
+  IncomingRows in;
+  in.start.assign(n + 1, 0);
+  for (uint32_t q : t.target) ++in.start[q + 1];
+  for (size_t q = 0; q < n; ++q) in.start[q + 1] += in.start[q];
+  in.source.resize(t.target.size());
+  in.weight.resize(t.target.size());
+  std::vector<uint64_t> fill(in.start.begin(), in.start.end() - 1);
+  for (size_t p = 0; p < n; ++p)
+    for (uint64_t k = t.row_start[p]; k < t.row_start[p + 1]; ++k) {
+      const uint32_t q = t.target[k];
+      in.source[fill[q]] = uint32_t(p);
+      in.weight[fill[q]++] = t.form_factor[k] * patches.area[p] / patches.area[q];
+    }
+  return in;
+}
+
 std::vector<uint32_t> all_patches(size_t n) {
   std::vector<uint32_t> which(n);
   for (size_t p = 0; p < n; ++p) which[p] = uint32_t(p);

@@ -38,6 +38,16 @@ struct Enclosures {
 
 Enclosures find_enclosures(const PatchTransport& transport);
 
+// The rows read the other way, for gathering: for each receiver q, the sources p with F_pq
+// weighted by A_p / A_q (what q receives per unit of p's exitance).
+struct IncomingRows {
+  std::vector<uint64_t> start;
+  std::vector<uint32_t> source;
+  std::vector<float> weight;
+};
+
+IncomingRows incoming_rows(const Patches& patches, const PatchTransport& transport);
+
 // Rows F(p -> q) as measured, before reciprocity: what adaptive subdivision keeps between rounds.
 using MeasuredRow = std::vector<std::pair<uint32_t, float>>;  // (target patch, F) by target
 

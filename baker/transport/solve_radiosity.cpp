@@ -38,34 +38,9 @@ struct Problem {
   float area(size_t p) const { return patches.area[p]; }
 };
 
-// Gathering needs, for each receiver q, the sources p with F_pq weighted by A_p / A_q.
-struct Incoming {
-  std::vector<uint64_t> start;
-  std::vector<uint32_t> source;
-  std::vector<float> weight;
-};
-
-Incoming transpose(const Patches& patches, const PatchTransport& t) {
-  const size_t n = patches.size();
-  Incoming in;
-  in.start.assign(n + 1, 0);
-  for (uint32_t q : t.target) ++in.start[q + 1];
-  for (size_t q = 0; q < n; ++q) in.start[q + 1] += in.start[q];
-  in.source.resize(t.target.size());
-  in.weight.resize(t.target.size());
-  std::vector<uint64_t> fill(in.start.begin(), in.start.end() - 1);
-  for (size_t p = 0; p < n; ++p)
-    for (uint64_t k = t.row_start[p]; k < t.row_start[p + 1]; ++k) {
-      uint32_t q = t.target[k];
-      in.source[fill[q]] = uint32_t(p);
-      in.weight[fill[q]++] = t.form_factor[k] * patches.area[p] / patches.area[q];
-    }
-  return in;
-}
-
 // What patch q would change by if it gathered now: rho_q (D_q + sum_p F_qp B_p) - B_q.
 template <typename V>
-V residual(const Problem<V>& pb, const Incoming& in, const std::vector<V>& b, size_t q) {
+V residual(const Problem<V>& pb, const IncomingRows& in, const std::vector<V>& b, size_t q) {
   V h = pb.direct[q];
   for (uint64_t k = in.start[q]; k < in.start[q + 1]; ++k) h += b[in.source[k]] * in.weight[k];
   return pb.reflectance[q] * h - b[q];
@@ -85,7 +60,7 @@ bool open_patch(V still_to_come, V exitance, double tolerance) {
 // Residual of the current estimate: what each patch would still change by. Returns the total
 // power; `open` is the number of open patches.
 template <typename V>
-double residual_power(const Problem<V>& pb, const Incoming& in, const std::vector<V>& b, double tolerance,
+double residual_power(const Problem<V>& pb, const IncomingRows& in, const std::vector<V>& b, double tolerance,
                       size_t& open) {
   double total = 0;
   open = 0;
@@ -294,7 +269,7 @@ Outcome shoot(const Problem<V>& pb, const std::vector<double>& input, const Solv
 
 // The residual per patch: the light each would still shoot, which the ambient term spreads.
 template <typename V>
-void residual_per_patch(const Problem<V>& pb, const Incoming& in, const std::vector<V>& b, std::vector<V>& unshot) {
+void residual_per_patch(const Problem<V>& pb, const IncomingRows& in, const std::vector<V>& b, std::vector<V>& unshot) {
   for (size_t q = 0; q < pb.size(); ++q) unshot[q] = non_negative(residual(pb, in, b, q));
 }
 
@@ -303,7 +278,7 @@ Outcome gather(const Problem<V>& pb, const SolveOptions& options,
                const SolveObserver& observer, Progress& progress, SolveSaver& saver, std::vector<V>& b,
                std::vector<V>& unshot) {
   const size_t n = pb.size();
-  Incoming in = transpose(pb.patches, pb.transport);
+  const IncomingRows in = incoming_rows(pb.patches, pb.transport);
   std::vector<V> next(n);
   Outcome out;
   auto write_state = [&](ByteWriter& w) {
