@@ -166,42 +166,29 @@ std::vector<Chart> make_charts(const std::vector<MeshView>& meshes, const std::v
   return charts;
 }
 
-}  // namespace
-
-Atlas ensure_lightmap_uvs(const std::vector<MeshView>& meshes, const AtlasOptions& options) {
+void check_options(const AtlasOptions& options) {
   if (options.max_page_size < 16 || options.max_page_size > 16384)
     throw InputError("maximum page size must be 16..16384 texels");
   if (options.padding < 0 || options.padding > 64) throw InputError("padding must be 0..64 texels");
   if (!(options.texel_density >= 0)) throw InputError("texel density must be positive");
-  const auto start = std::chrono::steady_clock::now();
-  UnwrapProgress progress(options.progress);
+}
 
-  Atlas atlas;
-  atlas.meshes.resize(meshes.size());
-  atlas.requested_density = options.texel_density;
-  // Charts are packed into a page of this side, and each page is then trimmed to what it uses:
-  // to a power of two, or with any_page_size to a multiple of 4. The automatic density is the
-  // highest whose charts fit this page, so a power-of-two page is filled, not padded afterwards.
-  const int page_size = options.any_page_size ? options.max_page_size : largest_power_of_two_at_most(options.max_page_size);
-  double total_area = 0;
-  for (const MeshView& m : meshes) total_area += world_area(m);
-  atlas.surface_area = total_area;
-  // The automatic density: the texel budget over the surface, or what fills one page if less
-  // (guessed at 70% of the page, what the packer usually reaches, then searched).
-  const float budget_density = float(std::sqrt(double(std::max<size_t>(1, options.automatic_texels)) / std::max(total_area, 1e-12)));
-  const float guess = std::min(budget_density, float(page_size * std::sqrt(0.7 / std::max(total_area, 1e-12))));
-  float density = options.texel_density > 0 ? options.texel_density : guess;
+// The meshes that keep the TEXCOORD_1 layout they came with, on pages of their own after the
+// generated ones.
+struct KeptLayouts {
+  std::vector<int> own_page;  // per mesh: its page in `pages`, or -1
+  std::vector<AtlasPage> pages;
+  std::vector<bool> generate;  // per mesh: its UVs are generated
+};
 
-  // Kept TEXCOORD_1 layouts get pages of their own, after the generated ones: own_page[m] indexes
-  // kept_pages.
-  std::vector<int> own_page(meshes.size(), -1);
-  std::vector<AtlasPage> kept_pages;
-  std::vector<bool> generate(meshes.size(), true);
+KeptLayouts keep_input_layouts(const std::vector<MeshView>& meshes, const AtlasOptions& options, float density,
+                               std::vector<std::string>& warnings) {
+  KeptLayouts kept{std::vector<int>(meshes.size(), -1), {}, std::vector<bool>(meshes.size(), true)};
   auto keep = [&](const std::vector<size_t>& group, AtlasPage page, const std::string& problem) {
     if (!problem.empty())
-      for (size_t m : group) atlas.warnings.push_back("mesh '" + meshes[m].name + "': " + problem + "; used anyway");
-    for (size_t m : group) own_page[m] = int(kept_pages.size()), generate[m] = false;
-    kept_pages.push_back(page);
+      for (size_t m : group) warnings.push_back("mesh '" + meshes[m].name + "': " + problem + "; used anyway");
+    for (size_t m : group) kept.own_page[m] = int(kept.pages.size()), kept.generate[m] = false;
+    kept.pages.push_back(page);
   };
   const bool may_keep = options.input_uvs != InputUvPolicy::Generate;
   // Meshes the file lays out on one page (a re-bake of radbake's own output, or another baker's)
@@ -226,8 +213,8 @@ Atlas ensure_lightmap_uvs(const std::vector<MeshView>& meshes, const AtlasOption
       keep(group, page, problem);
       continue;
     }
-    atlas.warnings.push_back(std::to_string(group.size()) + (group.size() == 1 ? " mesh" : " meshes") + " laid out on one " +
-                             size + " input lightmap page: " + problem + "; generating lightmap UVs");
+    warnings.push_back(std::to_string(group.size()) + (group.size() == 1 ? " mesh" : " meshes") + " laid out on one " +
+                       size + " input lightmap page: " + problem + "; generating lightmap UVs");
   }
   for (size_t m = 0; m < meshes.size(); ++m) {
     if (!may_keep || !meshes[m].lightmap_uvs || decided[m]) continue;
@@ -237,35 +224,40 @@ Atlas ensure_lightmap_uvs(const std::vector<MeshView>& meshes, const AtlasOption
       keep({m}, {side, side}, problem);
       continue;
     }
-    atlas.warnings.push_back("mesh '" + meshes[m].name + "': " + problem + "; generating lightmap UVs");
+    warnings.push_back("mesh '" + meshes[m].name + "': " + problem + "; generating lightmap UVs");
   }
-  double seam_length = 0;
-  std::vector<Chart> charts = make_charts(meshes, generate, options, density, &seam_length, progress);
+  return kept;
+}
 
-  int packings = 0;
-  const AtlasPage largest_page{page_size, page_size};
-  auto pack = [&](float d, PackGoal goal, AtlasPage page) {
+bool fits_one_page(const PackResult& r) { return r.pages.size() == 1 && r.downscaled_meshes.empty(); }
+
+// Packs the generated charts, each packing a share of the progress bar.
+class Packer {
+ public:
+  Packer(const std::vector<Chart>& charts, size_t meshes, const AtlasOptions& options, UnwrapProgress& progress)
+      : charts_(charts), meshes_(meshes), options_(options), progress_(progress) {}
+
+  PackResult operator()(float density, PackGoal goal, AtlasPage page) {
     const double share = (kPackingEnd - kChartsEnd) / kMostPackings;
-    progress.step(kChartsEnd + share * packings, kChartsEnd + share * (packings + 1));
-    packings = std::min(packings + 1, kMostPackings - 1);
-    return pack_charts(charts, meshes.size(), d, page, options.padding, options.rotate_charts, goal, progress);
-  };
-  auto fits = [](const PackResult& r) { return r.pages.size() == 1 && r.downscaled_meshes.empty(); };
-  // The highest density up to `cap` whose charts fit one `page`, into `packed`; false when none
+    progress_.step(kChartsEnd + share * packings_, kChartsEnd + share * (packings_ + 1));
+    packings_ = std::min(packings_ + 1, kMostPackings - 1);
+    return pack_charts(charts_, meshes_, density, page, options_.padding, options_.rotate_charts, goal, progress_);
+  }
+
+  // The highest density up to `cap` whose charts fit one `page`, and its packing; false when none
   // does. A bracket round the first try, then narrowed to 0.1%. Each try guesses from the last:
   // a page filled to a share f suggests sqrt(1/f) times the density, charts placed up to a share
   // p before one did not fit suggest sqrt(p) times; guesses stay inside the bracket, and halve it
   // when they would not shrink it.
-  PackResult packed;
-  auto most_that_fits = [&](AtlasPage page, float first, float cap) {
+  bool most_that_fits(AtlasPage page, float first, float cap, float& density, PackResult& packed) {
     float lo = 0, hi = 0;  // highest known to fit, lowest known not to
     PackResult best;
     float next = std::min(first, cap);
     for (int step = 0; step < 40; ++step) {
       const float d = next;
-      PackResult r = pack(d, PackGoal::OnePageOrNothing, page);
+      PackResult r = (*this)(d, PackGoal::OnePageOrNothing, page);
       float guess;
-      if (fits(r)) {
+      if (fits_one_page(r)) {
         const double filled = double(r.pages[0].width) * r.pages[0].height / (double(page.width) * page.height);
         guess = d * float(std::sqrt(1 / std::max(filled, 0.25)));
         lo = d, best = std::move(r);
@@ -283,61 +275,85 @@ Atlas ensure_lightmap_uvs(const std::vector<MeshView>& meshes, const AtlasOption
     density = lo;
     packed = std::move(best);
     return true;
-  };
+  }
+
+ private:
+  const std::vector<Chart>& charts_;
+  size_t meshes_;
+  const AtlasOptions& options_;
+  UnwrapProgress& progress_;
+  int packings_ = 0;
+};
+
+// The generated charts packed, at the density chosen for them.
+struct PackedCharts {
+  PackResult result;
+  float density = 0;
+  AtlasPage smallest_holding_budget{0, 0};  // the automatic density's page, when one held the budget
+};
+
+// `density`: the given density, or the automatic one's first guess; `budget_density` spends the
+// texel budget over the surface.
+PackedCharts pack_at_chosen_density(const std::vector<Chart>& charts, size_t meshes, const AtlasOptions& options,
+                                    int page_size, float density, float budget_density, UnwrapProgress& progress,
+                                    std::vector<std::string>& warnings) {
+  Packer pack(charts, meshes, options, progress);
+  PackedCharts out;
+  out.density = density;
+  const AtlasPage largest_page{page_size, page_size};
   // The automatic density on power-of-two pages: the smallest page, square or twice as wide as
   // high, that holds the texel budget within kBudgetLatitude, filled up to kMostFill of it
   // (engines allocate the whole page, so a budget on a page twice its size is half empty: the
   // Cornell box's 50,000 texels were 39% of a 1024 x 128 page).
-  AtlasPage smallest_holding_budget{0, 0};
   const double least_texels = double(options.automatic_texels) / kBudgetLatitude;
   if (options.texel_density == 0 && !options.any_page_size && !charts.empty())
-    for (int side = 16; side <= page_size && smallest_holding_budget.width == 0; side *= 2)
+    for (int side = 16; side <= page_size && out.smallest_holding_budget.width == 0; side *= 2)
       for (AtlasPage page : {AtlasPage{side, side / 2}, AtlasPage{side, side}}) {
         if (page.height < 16 || double(page.width) * page.height < least_texels) continue;
-        if (fits(pack(budget_density / float(std::sqrt(kBudgetLatitude)), PackGoal::OnePageOrNothing, page))) {
-          smallest_holding_budget = page;
+        if (fits_one_page(pack(budget_density / float(std::sqrt(kBudgetLatitude)), PackGoal::OnePageOrNothing, page))) {
+          out.smallest_holding_budget = page;
           break;
         }
       }
-  if (smallest_holding_budget.width > 0) {
+  if (out.smallest_holding_budget.width > 0) {
     const float most_density = budget_density * float(std::sqrt(kMostFill));
-    most_that_fits(smallest_holding_budget, most_density, most_density);
+    pack.most_that_fits(out.smallest_holding_budget, most_density, most_density, out.density, out.result);
   } else if (charts.empty() || (options.texel_density > 0 && !options.fit_one_page)) {
-    packed = pack(density, PackGoal::AsManyPagesAsNeeded, largest_page);
-  } else if (!most_that_fits(largest_page, density, options.texel_density > 0 ? options.texel_density : budget_density)) {
-    packed = pack(density, PackGoal::AsManyPagesAsNeeded, largest_page);
-    atlas.warnings.push_back("the charts do not fit one " + std::to_string(page_size) +
-                             "-texel page at any density; using " + std::to_string(packed.pages.size()) + " pages");
+    out.result = pack(out.density, PackGoal::AsManyPagesAsNeeded, largest_page);
+  } else if (!pack.most_that_fits(largest_page, out.density,
+                                  options.texel_density > 0 ? options.texel_density : budget_density, out.density,
+                                  out.result)) {
+    out.result = pack(out.density, PackGoal::AsManyPagesAsNeeded, largest_page);
+    warnings.push_back("the charts do not fit one " + std::to_string(page_size) + "-texel page at any density; using " +
+                       std::to_string(out.result.pages.size()) + " pages");
   }
-  atlas.density_lowered = options.texel_density > 0 && density < options.texel_density;
-  if (atlas.density_lowered)
-    atlas.warnings.push_back("the density was lowered from " + std::to_string(options.texel_density) + " to " +
-                             std::to_string(density) + " texels/m to fit one page");
-  atlas.texel_density = density;
+  return out;
+}
+
+// Atlas::density_choice: how the density came about, in words.
+std::string density_choice(const AtlasOptions& options, const Atlas& atlas, const PackedCharts& packed,
+                           float budget_density, int page_size) {
   char choice[240];
   if (options.texel_density > 0)
     std::snprintf(choice, sizeof choice, atlas.density_lowered ? "given, lowered to fit one page" : "given");
-  else if (smallest_holding_budget.width > 0)
+  else if (packed.smallest_holding_budget.width > 0)
     std::snprintf(choice, sizeof choice,
                   "automatic: %dx%d, the smallest power-of-two page that holds %zu texels over %.3g m2 of surface "
                   "(to a factor of 1.41), filled up to twice that",
-                  smallest_holding_budget.width, smallest_holding_budget.height, options.automatic_texels, total_area);
-  else if (density >= budget_density * 0.999f)
-    std::snprintf(choice, sizeof choice, "automatic: %zu texels over %.3g m2 of surface", options.automatic_texels, total_area);
+                  packed.smallest_holding_budget.width, packed.smallest_holding_budget.height,
+                  options.automatic_texels, atlas.surface_area);
+  else if (packed.density >= budget_density * 0.999f)
+    std::snprintf(choice, sizeof choice, "automatic: %zu texels over %.3g m2 of surface", options.automatic_texels,
+                  atlas.surface_area);
   else
     std::snprintf(choice, sizeof choice, "automatic: the most that fits one %d-texel page (%zu texels over %.3g m2 would not)",
-                  page_size, options.automatic_texels, total_area);
-  atlas.density_choice = choice;
-  atlas.pages = packed.pages;
-  // Trimming only takes empty texels off the top and right: charts keep their texel positions, and
-  // lay_out_charts divides by the final page size.
-  if (!options.any_page_size)
-    for (AtlasPage& p : atlas.pages)
-      p.width = smallest_power_of_two_at_least(p.width), p.height = smallest_power_of_two_at_least(p.height);
-  for (uint32_t m : packed.downscaled_meshes)
-    atlas.warnings.push_back("mesh '" + meshes[m].name + "' is too large for one " + std::to_string(page_size) +
-                             "-texel page at " + std::to_string(density) + " texels/m and was scaled down");
+                  page_size, options.automatic_texels, atlas.surface_area);
+  return choice;
+}
 
+// Each mesh's lightmap UVs: its charts where they were placed, or its own layout on its page.
+void lay_out_meshes(const std::vector<MeshView>& meshes, const std::vector<Chart>& charts, const PackResult& packed,
+                    const KeptLayouts& kept, UnwrapProgress& progress, Atlas& atlas) {
   std::vector<std::vector<const Chart*>> charts_of(meshes.size());
   std::vector<std::vector<const ChartPlacement*>> placements_of(meshes.size());
   for (size_t c = 0; c < charts.size(); ++c) {
@@ -345,14 +361,14 @@ Atlas ensure_lightmap_uvs(const std::vector<MeshView>& meshes, const AtlasOption
     placements_of[charts[c].mesh].push_back(&packed.placements[c]);
   }
   // Only degenerate triangles to generate for: they still need a page to point at.
-  if (atlas.pages.empty() && std::count(generate.begin(), generate.end(), true)) atlas.pages.push_back({16, 16});
+  if (atlas.pages.empty() && std::count(kept.generate.begin(), kept.generate.end(), true)) atlas.pages.push_back({16, 16});
   const int first_kept_page = int(atlas.pages.size());
-  atlas.pages.insert(atlas.pages.end(), kept_pages.begin(), kept_pages.end());
+  atlas.pages.insert(atlas.pages.end(), kept.pages.begin(), kept.pages.end());
   uint32_t next_chart = 0;
   for (size_t m = 0; m < meshes.size(); ++m) {
     progress.poll();
-    if (own_page[m] >= 0) {
-      atlas.meshes[m] = keep_own_uvs(meshes[m], first_kept_page + own_page[m], next_chart);
+    if (kept.own_page[m] >= 0) {
+      atlas.meshes[m] = keep_own_uvs(meshes[m], first_kept_page + kept.own_page[m], next_chart);
       continue;
     }
     int page = placements_of[m].empty() ? 0 : placements_of[m][0]->page;
@@ -360,6 +376,53 @@ Atlas ensure_lightmap_uvs(const std::vector<MeshView>& meshes, const AtlasOption
     next_chart += uint32_t(charts_of[m].size());
   }
   atlas.chart_count = next_chart;
+}
+
+}  // namespace
+
+Atlas ensure_lightmap_uvs(const std::vector<MeshView>& meshes, const AtlasOptions& options) {
+  check_options(options);
+  const auto start = std::chrono::steady_clock::now();
+  UnwrapProgress progress(options.progress);
+
+  Atlas atlas;
+  atlas.meshes.resize(meshes.size());
+  atlas.requested_density = options.texel_density;
+  // Charts are packed into a page of this side, and each page is then trimmed to what it uses:
+  // to a power of two, or with any_page_size to a multiple of 4. The automatic density is the
+  // highest whose charts fit this page, so a power-of-two page is filled, not padded afterwards.
+  const int page_size = options.any_page_size ? options.max_page_size : largest_power_of_two_at_most(options.max_page_size);
+  double total_area = 0;
+  for (const MeshView& m : meshes) total_area += world_area(m);
+  atlas.surface_area = total_area;
+  // The automatic density: the texel budget over the surface, or what fills one page if less
+  // (guessed at 70% of the page, what the packer usually reaches, then searched).
+  const float budget_density = float(std::sqrt(double(std::max<size_t>(1, options.automatic_texels)) / std::max(total_area, 1e-12)));
+  const float guess = std::min(budget_density, float(page_size * std::sqrt(0.7 / std::max(total_area, 1e-12))));
+  const float first_density = options.texel_density > 0 ? options.texel_density : guess;
+
+  const KeptLayouts kept = keep_input_layouts(meshes, options, first_density, atlas.warnings);
+  double seam_length = 0;
+  const std::vector<Chart> charts = make_charts(meshes, kept.generate, options, first_density, &seam_length, progress);
+  const PackedCharts packed = pack_at_chosen_density(charts, meshes.size(), options, page_size, first_density,
+                                                     budget_density, progress, atlas.warnings);
+  const float density = packed.density;
+  atlas.density_lowered = options.texel_density > 0 && density < options.texel_density;
+  if (atlas.density_lowered)
+    atlas.warnings.push_back("the density was lowered from " + std::to_string(options.texel_density) + " to " +
+                             std::to_string(density) + " texels/m to fit one page");
+  atlas.texel_density = density;
+  atlas.density_choice = density_choice(options, atlas, packed, budget_density, page_size);
+  atlas.pages = packed.result.pages;
+  // Trimming only takes empty texels off the top and right: charts keep their texel positions, and
+  // lay_out_charts divides by the final page size.
+  if (!options.any_page_size)
+    for (AtlasPage& p : atlas.pages)
+      p.width = smallest_power_of_two_at_least(p.width), p.height = smallest_power_of_two_at_least(p.height);
+  for (uint32_t m : packed.result.downscaled_meshes)
+    atlas.warnings.push_back("mesh '" + meshes[m].name + "' is too large for one " + std::to_string(page_size) +
+                             "-texel page at " + std::to_string(density) + " texels/m and was scaled down");
+  lay_out_meshes(meshes, charts, packed.result, kept, progress, atlas);
   progress.step(kPackingEnd, 1);
   atlas.stats = measure_atlas(meshes, atlas, options.padding);
   atlas.stats.seam_length = seam_length;

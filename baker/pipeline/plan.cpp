@@ -195,17 +195,23 @@ bool light_can_reach(const Light& light, const Vec3 (&corners)[3]) {
   return off_axis - std::asin(radius / distance) < light.outer_cone_angle;
 }
 
-EffectPlan plan_effects(const Scene& scene, const PlanOptions& options) {
-  EffectPlan plan;
-  const std::vector<int> used = used_materials(scene);
-  auto decide = [&](std::string effect, std::string choice, std::string reason) {
-    plan.decisions.push_back({std::move(effect), std::move(choice), std::move(reason)});
-  };
+namespace {
 
-  // Light sources: lights that can reach some triangle's front, and emitting materials.
+void decide(EffectPlan& plan, std::string effect, std::string choice, std::string reason) {
+  plan.decisions.push_back({std::move(effect), std::move(choice), std::move(reason)});
+}
+
+std::vector<int> emitting_materials(const Scene& scene, const std::vector<int>& used) {
   std::vector<int> emitting;
   for (int m : used)
     if (material_of(scene, m).emits()) emitting.push_back(m);
+  return emitting;
+}
+
+// Light sources: lights that can reach some triangle's front, and emitting materials. A scene
+// that nothing lights is refused here, before anything is built.
+void plan_light_sources(const Scene& scene, const PlanOptions& options, const std::vector<int>& emitting,
+                        EffectPlan& plan) {
   plan.light_traced.assign(scene.lights.size(), 0);
   for (size_t l = 0; l < scene.lights.size(); ++l) {
     const Light& light = scene.lights[l];
@@ -214,7 +220,7 @@ EffectPlan plan_effects(const Scene& scene, const PlanOptions& options) {
       continue;
     }
     if (!(light.intensity > 0)) {
-      decide(light_name(scene, l), "culled: no shadow rays", "its intensity is zero");
+      decide(plan, light_name(scene, l), "culled: no shadow rays", "its intensity is zero");
       continue;
     }
     for_each_triangle(scene, [&](const MeshInstance& inst, const Vec3(&c)[3]) {
@@ -225,7 +231,7 @@ EffectPlan plan_effects(const Scene& scene, const PlanOptions& options) {
     if (plan.light_traced[l]) continue;
     std::string why = light.type == LightType::Spot ? "no surface front inside its cone" : "no surface faces it";
     if (light.range > 0) why += " within its range of " + metres(light.range);
-    decide(light_name(scene, l), "culled: no shadow rays", why);
+    decide(plan, light_name(scene, l), "culled: no shadow rays", why);
   }
   if (emitting.empty() && scene.lights.empty() && !options.sky)
     throw InputError("nothing in the scene emits light: no KHR_lights_punctual light and no emissive material");
@@ -233,8 +239,10 @@ EffectPlan plan_effects(const Scene& scene, const PlanOptions& options) {
       std::none_of(plan.light_traced.begin(), plan.light_traced.end(), [](uint8_t t) { return t; }))
     throw InputError("no light reaches a surface: every light is behind the surfaces, out of range or aimed away, "
                      "and no material emits");
+}
 
-  // What the bake leaves out.
+// What the bake leaves out, a warning per feature naming its materials.
+void warn_unsimulated(const Scene& scene, const std::vector<int>& used, EffectPlan& plan) {
   std::map<std::string, std::vector<std::string>> left_out;  // feature -> materials
   for (int m : used) {
     const Material& mat = material_of(scene, m);
@@ -248,27 +256,27 @@ EffectPlan plan_effects(const Scene& scene, const PlanOptions& options) {
     plan.warnings.push_back(feature + " is not simulated (" + list +
                             "): radbake bakes diffuse light only, so these surfaces are baked opaque, with their diffuse reflectance alone");
   }
-  if (options.simulate_everything) {
-    plan.exhaustive = true;
-    decide("everything", "simulated", "asked to simulate every effect whatever the scene");
-    return plan;
-  }
+}
 
-  // Interreflection.
+void plan_interreflection(const Scene& scene, const std::vector<int>& used, const PlanOptions& options,
+                          EffectPlan& plan) {
   size_t reflecting = 0;
   for (int m : used) reflecting += !reflects_nothing(material_of(scene, m));
   if (options.direct_only) {
     plan.interreflection = false;
-    decide("interreflection", "skipped", "asked for direct light only");
+    decide(plan, "interreflection", "skipped", "asked for direct light only");
   } else if (reflecting == 0) {
     plan.interreflection = false;
-    decide("interreflection", "skipped", "no material reflects light (all black or fully metallic)");
+    decide(plan, "interreflection", "skipped", "no material reflects light (all black or fully metallic)");
   } else {
-    decide("interreflection", "solved",
+    decide(plan, "interreflection", "solved",
            std::to_string(reflecting) + " of " + std::to_string(used.size()) + " materials reflect light");
   }
+}
 
-  // Colour channels: one when every reflectance is grey and every emitter has one colour.
+// Colour channels: one when every reflectance is grey and every emitter has one colour.
+void plan_colour_channels(const Scene& scene, const std::vector<int>& used, const std::vector<int>& emitting,
+                          const PlanOptions& options, EffectPlan& plan) {
   std::string coloured;
   for (int m : used) {
     const Material& mat = material_of(scene, m);
@@ -289,61 +297,82 @@ EffectPlan plan_effects(const Scene& scene, const PlanOptions& options) {
   if (options.sky) colours.push_back(Rgb{1, 1, 1});
   bool one_colour = !colours.empty() && std::all_of(colours.begin(), colours.end(),
                                                     [&](Rgb c) { return same_colour(c, colours.front()); });
-  if (!plan.interreflection) {
-    // nothing to solve, in any number of channels
-  } else if (!coloured.empty()) {
-    decide("colour channels", "3 solved", coloured);
+  if (!plan.interreflection) return;  // nothing to solve, in any number of channels
+  if (!coloured.empty()) {
+    decide(plan, "colour channels", "3 solved", coloured);
   } else if (!one_colour) {
-    decide("colour channels", "3 solved", "every material is grey, but the lights differ in colour");
+    decide(plan, "colour channels", "3 solved", "every material is grey, but the lights differ in colour");
   } else {
     plan.one_channel = true;
     plan.light_colour = colours.front();
-    decide("colour channels", "1 solved, scaled by the light colour",
+    decide(plan, "colour channels", "1 solved, scaled by the light colour",
            "every material is grey and every light has the same colour");
   }
+}
 
-  // Textures and vertex colours.
+void plan_textures(const Scene& scene, const std::vector<int>& used, EffectPlan& plan) {
   size_t varying = 0;
   for (int m : used) varying += varies(scene, m);
   bool vertex_colours = std::any_of(scene.instances.begin(), scene.instances.end(),
                                     [](const MeshInstance& inst) { return !inst.colors.empty(); });
   if (varying == 0 && !vertex_colours) {
     plan.texture_sampling = false;
-    decide("textures", "not sampled: one reflectance and emission per material",
+    decide(plan, "textures", "not sampled: one reflectance and emission per material",
            "no material has a texture and no mesh has vertex colours");
   } else {
-    decide("textures", "box-filtered over each texel where the material varies",
+    decide(plan, "textures", "box-filtered over each texel where the material varies",
            std::to_string(varying) + " materials have textures" + (vertex_colours ? ", some meshes vertex colours" : ""));
   }
+}
 
-  // Double-sided backs, as baker/surface/back_faces.cpp gave them (or not) triangles of their own.
+// Double-sided backs, as baker/surface/back_faces.cpp gave them (or not) triangles of their own.
+void report_double_sided_backs(const Scene& scene, EffectPlan& plan) {
   size_t double_sided = 0, twins = 0;
   for (const MeshInstance& inst : scene.instances) {
     if (inst.back_of >= 0) twins += inst.triangle_count();
     else if (material_of(scene, inst.material).double_sided) double_sided += inst.triangle_count();
   }
-  if (double_sided > 0) {
-    const std::string kept = std::to_string(double_sided - twins);
-    decide("double-sided backs",
-           std::to_string(twins) + " of " + std::to_string(double_sided) + " baked with texels of their own",
-           twins == double_sided ? "every one can receive light: on an open surface or a light behind it"
-                                 : kept + " are on closed shells with no light behind them: they show their front's texel");
-  }
+  if (double_sided == 0) return;
+  const std::string kept = std::to_string(double_sided - twins);
+  decide(plan, "double-sided backs",
+         std::to_string(twins) + " of " + std::to_string(double_sided) + " baked with texels of their own",
+         twins == double_sided ? "every one can receive light: on an open surface or a light behind it"
+                               : kept + " are on closed shells with no light behind them: they show their front's texel");
+}
 
-  // Visibility.
+void plan_shadows(const Scene& scene, const PlanOptions& options, EffectPlan& plan) {
   std::string hidden = why_not_convex(scene, plan.light_traced);
-  if (hidden.empty()) {
-    plan.shadow_rays = false;
-    if (options.sky)
-      decide("shadows", "traced for the sky and the sun only",
-             "they shine from outside; the scene is convex with its own lights inside, which need none");
-    else
-      decide("shadows", "no shadow rays", "the scene is a convex enclosure with every light inside: nothing can "
-                                          "shadow anything");
-  } else {
-    decide("shadows", "traced", hidden);
+  if (!hidden.empty()) {
+    decide(plan, "shadows", "traced", hidden);
+    return;
   }
+  plan.shadow_rays = false;
+  if (options.sky)
+    decide(plan, "shadows", "traced for the sky and the sun only",
+           "they shine from outside; the scene is convex with its own lights inside, which need none");
+  else
+    decide(plan, "shadows", "no shadow rays", "the scene is a convex enclosure with every light inside: nothing can "
+                                              "shadow anything");
+}
 
+}  // namespace
+
+EffectPlan plan_effects(const Scene& scene, const PlanOptions& options) {
+  EffectPlan plan;
+  const std::vector<int> used = used_materials(scene);
+  const std::vector<int> emitting = emitting_materials(scene, used);
+  plan_light_sources(scene, options, emitting, plan);
+  warn_unsimulated(scene, used, plan);
+  if (options.simulate_everything) {
+    plan.exhaustive = true;
+    decide(plan, "everything", "simulated", "asked to simulate every effect whatever the scene");
+    return plan;
+  }
+  plan_interreflection(scene, used, options, plan);
+  plan_colour_channels(scene, used, emitting, options, plan);
+  plan_textures(scene, used, plan);
+  report_double_sided_backs(scene, plan);
+  plan_shadows(scene, options, plan);
   return plan;
 }
 
