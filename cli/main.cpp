@@ -24,12 +24,10 @@
 #include "io/analysis/analysis_outputs.h"
 #include "io/analysis/annual_outputs.h"
 #include "io/analysis/epw_reader.h"
-#include "io/gltf/display_gltf.h"
 #include "io/gltf/gltf_loader.h"
-#include "io/gltf/gltf_writer.h"
-#include "io/lightmaps/debug_dumps.h"
-#include "io/lightmaps/light_probe_outputs.h"
 #include "io/lightmaps/lightmap_images.h"
+#include "io/lightmaps/page_encodings.h"
+#include "io/run/bake_outputs.h"
 #include "io/run/checkpoint_folder.h"
 #include "io/run/output_folder.h"
 #include "io/run/report.h"
@@ -68,46 +66,6 @@ class PreviewWriter {
   bool quiet_;
   float scale_ = 0;
 };
-
-// The exposure both files record, metered on the pre-lit light, and the display file.
-radbake::DisplaySummary write_display(const radbake::BakeCommand& cmd, const radbake::LoadedScene& loaded,
-                                      const radbake::Atlas& atlas, const radbake::BakeResult& result,
-                                      const std::string& folder, const std::string& name) {
-  using namespace radbake;
-  const Scene& scene = loaded.scene;
-  const bool irradiance = cmd.bake.store == StoredQuantity::Irradiance;
-  const bool sh = cmd.bake.directional == Directional::SphericalHarmonics;
-  const DisplayLight light = display_light(scene, atlas, result.pages, result.vertex_values,
-                                           sh ? &result.directional : nullptr, cmd.bake.emission_scale, irradiance,
-                                           cmd.bake.glazing, &result.display_view, cmd.display);
-  DisplaySummary summary;
-  summary.exposure = light.exposure;
-  if (cmd.display.mode == DisplayMode::None) return summary;
-  const bool vertex_lit = cmd.display.mode == DisplayMode::Vertex;
-  if (vertex_lit)
-    for (size_t k = 0; k < light.refined.curve.triangles.size(); ++k)
-      summary.refinement.push_back({light.refined.curve.triangles[k], light.refined.curve.rms_relative[k]});
-  DisplayInput input;
-  input.scene = &scene;
-  input.atlas = &atlas;
-  input.pages = &light.pages;
-  input.meshes = &light.refined.meshes;
-  input.vertex_lit = vertex_lit;
-  input.lightmap_is_irradiance = irradiance;
-  input.emission_scale = cmd.bake.emission_scale;
-  input.exposure = light.exposure;
-  input.source = loaded.source.get();
-  input.camera = &result.display_camera;
-  stop_if_interrupted();
-  const DisplayOutput written = write_display_gltf(input, folder, name);
-  summary.file = written.file;
-  summary.shows = vertex_lit ? "vertex light" : "pre-lit pages";
-  summary.prelit_detail = vertex_lit ? 0 : light.pages.detail;
-  summary.triangles = written.triangles;
-  summary.camera = written.camera;
-  if (written.camera_added) summary.added_camera = result.display_camera;
-  return summary;
-}
 
 // One line per set of readings: what a lighting report's summary table gives.
 void print_readings(const char* what, const radbake::ReadingSummary& lux, const radbake::ReadingSummary& percent) {
@@ -268,6 +226,89 @@ const char* stage_title(const std::string& stage) {
 }
 
 // `radbake bake` and `radbake merge`, but for a year of weather.
+// The bake's options from the command line, with its sky, sensors and what the analysis files
+// need; a daylight factor leaves the scene's own lights out.
+struct BakeSetup {
+  radbake::BakeOptions options;
+  radbake::AnalysisOptions analysis;
+};
+
+BakeSetup set_up_bake(const radbake::BakeCommand& cmd, radbake::Scene& scene, radbake::RunInfo& run) {
+  using namespace radbake;
+  BakeSetup setup{cmd.bake, cmd.analysis};
+  const Daylight daylight = daylight_sky(cmd.daylight);
+  setup.options.sky = daylight.light;
+  setup.options.plan.sky = daylight.light.enabled;
+  if (daylight.light.enabled) run.daylight = daylight.summary;
+  setup.analysis.lightmap_is_irradiance = cmd.bake.store == StoredQuantity::Irradiance;
+  setup.analysis.views = cmd.bake.views;
+  if (cmd.daylight_factor) {
+    setup.analysis.daylight_factor_reference = daylight_factor_reference(cmd.daylight, daylight);
+    leave_out_artificial_light(scene);
+  }
+  if (!cmd.sensor_file.empty()) setup.options.sensors = read_sensor_csv(cmd.sensor_file);
+  setup.options.keep_direct = cmd.debug_dumps;
+  return setup;
+}
+
+radbake::OutputOptions output_options(const radbake::BakeCommand& cmd, const radbake::AnalysisOptions& analysis,
+                                      const std::string& name) {
+  radbake::OutputOptions output;
+  output.name = name;
+  output.store = cmd.bake.store;
+  output.directional = cmd.bake.directional;
+  output.probes = cmd.bake.probes.enabled;
+  output.emission_scale = cmd.bake.emission_scale;
+  output.glazing = cmd.bake.glazing;
+  output.png_scale = cmd.png_scale;
+  output.color_0 = cmd.color_0;
+  output.display = cmd.display;
+  output.analysis = analysis;
+  output.debug_dumps = cmd.debug_dumps;
+  output.go_on = [] { return !radbake::interrupted(); };
+  return output;
+}
+
+// The scene's, the atlas's, the bake's and the writer's warnings, in that order.
+std::vector<std::string> all_warnings(const radbake::Scene& scene, const radbake::Atlas& atlas,
+                                      const radbake::BakeResult& result, const radbake::WrittenOutputs& written) {
+  std::vector<std::string> warnings = scene.warnings;
+  warnings.insert(warnings.end(), atlas.warnings.begin(), atlas.warnings.end());
+  warnings.insert(warnings.end(), result.report.warnings.begin(), result.report.warnings.end());
+  warnings.insert(warnings.end(), written.gltf.warnings.begin(), written.gltf.warnings.end());
+  return warnings;
+}
+
+// After the bake: its warnings and readings on stderr (unless quiet), and the line saying what was
+// written on stdout.
+void print_written(const radbake::BakeCommand& cmd, const radbake::RunInfo& run, const radbake::BakeResult& result,
+                   const radbake::WrittenOutputs& written, const std::vector<std::string>& warnings) {
+  using namespace radbake;
+  if (!cmd.quiet) {
+    for (const std::string& w : warnings) std::fprintf(stderr, "radbake: warning: %s\n", clipped(w, 600).c_str());
+    print_readings("sensors", run.analysis.sensors, run.analysis.sensors_daylight_factor);
+    print_readings("work plane", run.analysis.work_plane, run.analysis.work_plane_daylight_factor);
+    print_storeys(run.analysis);
+    if (result.report.sky_noise > 0)
+      std::fprintf(stderr, "radbake: texels' sky light: noise under %.2g%% (RMS standard error over the mean, "
+                           "overstated; --sky-rays or --quality production for less)\n", 100 * result.report.sky_noise);
+  }
+  char balance[64] = "energy balance not measured";
+  if (result.report.balance.measured)
+    std::snprintf(balance, sizeof balance, "energy balance %.3f%%", 100.0 * result.report.balance.relative_error);
+  else if (result.report.path_samples > 0)
+    std::snprintf(balance, sizeof balance, "path traced, noise %.2f%%", 100.0 * result.report.path_relative_noise);
+  std::printf("radbake: wrote %s/%s (%zu page%s, %zu texels, %s, %.1f s)\n", cmd.output.c_str(),
+              written.gltf.gltf_file.c_str(), result.pages.size(), result.pages.size() == 1 ? "" : "s",
+              result.report.valid_elements, balance, run.total_seconds);
+}
+
+void print_plan(const std::vector<radbake::PlanDecision>& decisions, size_t from, const char* prefix) {
+  for (size_t k = from; k < decisions.size(); ++k)
+    std::fprintf(stderr, "radbake: %s%s: %s (%s)\n", prefix, decisions[k].effect.c_str(), decisions[k].choice.c_str(),
+                 decisions[k].reason.c_str());
+}
+
 int run_one_bake(const radbake::BakeCommand& cmd, radbake::Team& team, std::optional<OutputSession>& session) {
   using namespace radbake;
   const bool first = team.first();
@@ -283,24 +324,11 @@ int run_one_bake(const radbake::BakeCommand& cmd, radbake::Team& team, std::opti
   run.io_times.push_back({"load", seconds_since(t)});
   stop_if_interrupted();
   // Planned before anything is written or unwrapped, so a scene with no light fails at once.
-  BakeOptions options = cmd.bake;
-  const Daylight daylight = daylight_sky(cmd.daylight);
-  options.sky = daylight.light;
-  options.plan.sky = daylight.light.enabled;
-  if (daylight.light.enabled) run.daylight = daylight.summary;
-  AnalysisOptions analysis = cmd.analysis;
-  analysis.lightmap_is_irradiance = cmd.bake.store == StoredQuantity::Irradiance;
-  analysis.views = cmd.bake.views;
-  if (cmd.daylight_factor) {
-    analysis.daylight_factor_reference = daylight_factor_reference(cmd.daylight, daylight);
-    leave_out_artificial_light(loaded.scene);
-  }
-  if (!cmd.sensor_file.empty()) options.sensors = read_sensor_csv(cmd.sensor_file);
+  BakeSetup setup = set_up_bake(cmd, loaded.scene, run);
+  BakeOptions& options = setup.options;
   const EffectPlan plan = plan_effects(loaded.scene, options.plan);
   const bool quiet = cmd.quiet || !first;
-  if (!quiet)
-    for (const PlanDecision& d : plan.decisions)
-      std::fprintf(stderr, "radbake: plan: %s: %s (%s)\n", d.effect.c_str(), d.choice.c_str(), d.reason.c_str());
+  if (!quiet) print_plan(plan.decisions, 0, "plan: ");
   // Only the first process checks and writes the checkpoint; the others hand it their results.
   std::unique_ptr<CheckpointFolder> checkpoint;
   if (!cmd.checkpoint.empty())
@@ -329,7 +357,6 @@ int run_one_bake(const radbake::BakeCommand& cmd, radbake::Team& team, std::opti
                  100.0 / atlas.texel_density, atlas.density_choice.c_str());
   }
 
-  options.keep_direct = cmd.debug_dumps;
   const std::string name = std::filesystem::path(cmd.input).stem().string();
   std::optional<PreviewWriter> previews;
   if (session) previews.emplace(session->folder.path(), name, cmd.quiet);
@@ -351,70 +378,25 @@ int run_one_bake(const radbake::BakeCommand& cmd, radbake::Team& team, std::opti
   display.finish();
   if (!first) return 0;
   StagedFolder& folder = session->folder;
-  if (!cmd.quiet)
-    for (size_t k = plan.decisions.size(); k < result.report.plan.size(); ++k) {
-      const PlanDecision& d = result.report.plan[k];
-      std::fprintf(stderr, "radbake: %s: %s (%s)\n", d.effect.c_str(), d.choice.c_str(), d.reason.c_str());
-    }
+  if (!cmd.quiet) print_plan(result.report.plan, plan.decisions.size(), "");
 
   t = std::chrono::steady_clock::now();
-  const bool irradiance = cmd.bake.store == StoredQuantity::Irradiance;
-  if (cmd.debug_dumps) write_debug_dumps(result, atlas.pages, folder.path(), name);
-  // Per-element data is not needed for writing; freeing it keeps the write out of the peak.
-  result.elements = {};
-  result.irradiance = {};
-  result.direct = {};
-  float scale = cmd.png_scale > 0 ? cmd.png_scale : automatic_png_scale(result.pages);
-  stop_if_interrupted();
-  LightmapFiles files = write_lightmaps(result.pages, folder.path(), name, irradiance ? "irradiance" : "radiosity",
-                                        irradiance ? "lx" : "lm/m2", scale);
-  stop_if_interrupted();
-  EngineFileOptions engine;
-  engine.color_0 = cmd.color_0;
-  engine.directional = write_directional(cmd.bake.directional, result.directional, folder.path(), name);
-  if (cmd.bake.probes.enabled) {
-    engine.probes = &result.probes;
-    engine.probes_file = write_light_probes(result.probes, folder.path(), name);
-  }
-  stop_if_interrupted();
-  run.display = write_display(cmd, loaded, atlas, result, folder.path(), name);
-  engine.display_exposure = run.display.exposure.exposure;
-  engine.display_file = run.display.file;
-  stop_if_interrupted();
-  GltfOutput gltf = write_gltf(*loaded.source, loaded.scene, atlas, result.vertex_values, files, folder.path(), name, engine);
-  run.analysis = write_analysis(result, folder.path(), name, analysis);
+  const WrittenOutputs written = write_bake_outputs(loaded, atlas, result, output_options(cmd, setup.analysis, name),
+                                                    folder.path());
+  run.display = written.display;
+  run.analysis = written.analysis;
   run.io_times.push_back({"write", seconds_since(t)});
 
-  std::vector<std::string> warnings = loaded.scene.warnings;
-  warnings.insert(warnings.end(), atlas.warnings.begin(), atlas.warnings.end());
-  warnings.insert(warnings.end(), result.report.warnings.begin(), result.report.warnings.end());
-  warnings.insert(warnings.end(), gltf.warnings.begin(), gltf.warnings.end());
+  const std::vector<std::string> warnings = all_warnings(loaded.scene, atlas, result, written);
   run.total_seconds = seconds_since(start);
   run.peak_memory_bytes = radbake::peak_resident_bytes();
   run.files = folder.files();
   run.files.push_back("report.json");  // the list is in it
   write_report((std::filesystem::path(folder.path()) / "report.json").string(), run, loaded.scene, atlas,
-               result.report, files, warnings);
+               result.report, written.lightmaps, warnings);
   stop_if_interrupted();
   folder.commit();
-
-  if (!cmd.quiet) {
-    for (const std::string& w : warnings) std::fprintf(stderr, "radbake: warning: %s\n", clipped(w, 600).c_str());
-    print_readings("sensors", run.analysis.sensors, run.analysis.sensors_daylight_factor);
-    print_readings("work plane", run.analysis.work_plane, run.analysis.work_plane_daylight_factor);
-    print_storeys(run.analysis);
-    if (result.report.sky_noise > 0)
-      std::fprintf(stderr, "radbake: texels' sky light: noise under %.2g%% (RMS standard error over the mean, "
-                           "overstated; --sky-rays or --quality production for less)\n", 100 * result.report.sky_noise);
-  }
-  char balance[64] = "energy balance not measured";
-  if (result.report.balance.measured)
-    std::snprintf(balance, sizeof balance, "energy balance %.3f%%", 100.0 * result.report.balance.relative_error);
-  else if (result.report.path_samples > 0)
-    std::snprintf(balance, sizeof balance, "path traced, noise %.2f%%", 100.0 * result.report.path_relative_noise);
-  std::printf("radbake: wrote %s/%s (%zu page%s, %zu texels, %s, %.1f s)\n", cmd.output.c_str(),
-              gltf.gltf_file.c_str(), result.pages.size(), result.pages.size() == 1 ? "" : "s",
-              result.report.valid_elements, balance, run.total_seconds);
+  print_written(cmd, run, result, written, warnings);
   return 0;
 }
 

@@ -227,8 +227,8 @@ class Writer {
   void add_lightmap_textures() {
     doc_["samplers"].push_back({{"magFilter", 9729}, {"minFilter", 9729}, {"wrapS", 33071}, {"wrapT", 33071}});
     const int sampler = int(doc_["samplers"].size() - 1);
-    for (const std::string& png : lightmaps_.png) {
-      doc_["images"].push_back({{"uri", png}, {"mimeType", "image/png"}});
+    for (size_t page = 0; page < lightmaps_.files.size(); ++page) {
+      doc_["images"].push_back({{"uri", lightmaps_.texture(page)}, {"mimeType", "image/png"}});
       doc_["textures"].push_back({{"sampler", sampler}, {"source", doc_["images"].size() - 1}});
       page_texture_.push_back(int(doc_["textures"].size() - 1));
     }
@@ -486,9 +486,15 @@ class Writer {
   }
 
   void describe_bake() {
+    // Per page: its texture's file first, then its other files, then the texture's index.
     json pages = json::array();
-    for (size_t p = 0; p < lightmaps_.png.size(); ++p)
-      pages.push_back({{"png", lightmaps_.png[p]}, {"exr", lightmaps_.exr[p]}, {"texture", texture_of_png(lightmaps_.png[p])}});
+    for (size_t p = 0; p < lightmaps_.files.size(); ++p) {
+      json page = {{texture_encoding().key, lightmaps_.texture(p)}};
+      for (size_t k = 0; k < page_encodings().size(); ++k)
+        if (&page_encodings()[k] != &texture_encoding()) page[page_encodings()[k].key] = lightmaps_.files[p][k];
+      page["texture"] = texture_of_png(lightmaps_.texture(p));
+      pages.push_back(page);
+    }
     const char* color_0 = options_.color_0 == Color0::Source ? "the input's own COLOR_0 (a base colour multiplier)"
                           : options_.color_0 == Color0::Light ? "linear RGB per vertex; quantity = COLOR_0 * color_0_intensity"
                                                               : "pre-lit display colour of a white surface: clip(quantity / pi * display_exposure), linear";
@@ -497,13 +503,12 @@ class Writer {
         {"quantity", lightmaps_.quantity},
         {"unit", lightmaps_.unit},
         {"pages", pages},
-        {"exr", "linear half-float RGB, the quantity in its unit"},
-        {"png", "8-bit sRGB-encoded; quantity = srgb_to_linear(png / 255) * MOZ_lightmap.intensity"},
-        {"png_intensity", lightmaps_.png_scale},
-        {"baked_light", "_BAKED_LIGHT: linear RGB per vertex, the quantity in its unit"},
-        {"color_0", color_0},
-        {"color_0_holds", options_.color_0 == Color0::Source ? "source" : options_.color_0 == Color0::Light ? "light" : "prelit"},
     };
+    for (const PageEncoding& encoding : page_encodings()) info[encoding.key] = encoding.description;
+    info["png_intensity"] = lightmaps_.png_scale;
+    info["baked_light"] = "_BAKED_LIGHT: linear RGB per vertex, the quantity in its unit";
+    info["color_0"] = color_0;
+    info["color_0_holds"] = options_.color_0 == Color0::Source ? "source" : options_.color_0 == Color0::Light ? "light" : "prelit";
     if (options_.color_0 == Color0::Light) info["color_0_intensity"] = color_scale_;
     if (options_.display_exposure > 0) {
       info["display_exposure"] = options_.display_exposure;

@@ -9,7 +9,7 @@
 #include "baker/readings/light_probes.h"
 #include "io/gltf/gltf_loader.h"
 #include "io/lightmaps/directional_outputs.h"
-#include "io/lightmaps/lightmap_images.h"
+#include "io/lightmaps/page_encodings.h"
 #include "uv/atlas.h"
 
 namespace radbake {

@@ -133,35 +133,7 @@ void write_png(const std::string& path, int width, int height, const std::vector
   close_written(out, path);
 }
 
-float automatic_png_scale(const std::vector<LightmapPage>& pages) {
-  std::vector<float> brightest;
-  for (const LightmapPage& page : pages)
-    for (size_t t = 0; t < page.texels.size(); ++t)
-      if (page.valid[t]) brightest.push_back(max_component(page.texels[t]));
-  if (brightest.empty()) return 1.0f;
-  size_t k = std::min(brightest.size() - 1, size_t(std::floor(0.999 * double(brightest.size() - 1))));
-  std::nth_element(brightest.begin(), brightest.begin() + long(k), brightest.end());
-  float scale = brightest[k];
-  return scale > 0 && std::isfinite(scale) ? scale : 1.0f;
-}
 
-LightmapFiles write_lightmaps(const std::vector<LightmapPage>& pages, const std::string& folder,
-                              const std::string& name, const std::string& quantity, const std::string& unit,
-                              float png_scale) {
-  LightmapFiles files;
-  files.quantity = quantity;
-  files.unit = unit;
-  files.png_scale = png_scale;
-  for (size_t p = 0; p < pages.size(); ++p) {
-    const LightmapPage& page = pages[p];
-    std::string stem = name + "_lightmap_" + std::to_string(p);
-    files.exr.push_back(stem + ".exr");
-    files.png.push_back(stem + ".png");
-    write_exr((std::filesystem::path(folder) / files.exr.back()).string(), page);
-    write_lightmap_png((std::filesystem::path(folder) / files.png.back()).string(), page, png_scale);
-  }
-  return files;
-}
 
 namespace {
 

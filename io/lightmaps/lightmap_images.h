@@ -10,22 +10,6 @@
 
 namespace radbake {
 
-// What the lightmap files are and how their values read back.
-struct LightmapFiles {
-  std::vector<std::string> png, exr;  // file names inside the output folder, one per page
-  float png_scale = 1;                // linear value = sRGB-decoded PNG value * png_scale
-  std::string quantity;               // "irradiance" or "radiosity"
-  std::string unit;                   // "lx" or "lm/m2"
-};
-
-// The PNG scale when none is given: the 99.9th percentile of the brightest channel over all
-// covered texels, so a few hot texels next to a lamp do not darken the whole page.
-float automatic_png_scale(const std::vector<LightmapPage>& pages);
-
-LightmapFiles write_lightmaps(const std::vector<LightmapPage>& pages, const std::string& folder,
-                              const std::string& name, const std::string& quantity, const std::string& unit,
-                              float png_scale);
-
 // One page as linear EXR: half float when every texel fits (up to 65504), full float otherwise.
 void write_exr(const std::string& path, const LightmapPage& page);
 

@@ -113,9 +113,11 @@ void write_report(const std::string& path, const RunInfo& run, const Scene& scen
   size_t kept = 0;
   for (const AtlasMesh& m : atlas.meshes) kept += m.kept_input_uvs;
   json pages = json::array();
-  for (size_t p = 0; p < atlas.pages.size(); ++p)
-    pages.push_back({{"width", atlas.pages[p].width}, {"height", atlas.pages[p].height},
-                     {"exr", lightmaps.exr[p]}, {"png", lightmaps.png[p]}});
+  for (size_t p = 0; p < atlas.pages.size(); ++p) {
+    json page = {{"width", atlas.pages[p].width}, {"height", atlas.pages[p].height}};
+    for (size_t k = 0; k < page_encodings().size(); ++k) page[page_encodings()[k].key] = lightmaps.files[p][k];
+    pages.push_back(page);
+  }
   json stages = json::object();
   for (const StageTime& t : run.io_times) stages[t.stage] = t.seconds;
   for (const StageTime& t : bake.stage_times) stages[t.stage] = t.seconds;

@@ -10,7 +10,7 @@
 #include "baker/pipeline/bake_result.h"
 #include "daylight/daylight_sky.h"
 #include "io/analysis/analysis_outputs.h"
-#include "io/lightmaps/lightmap_images.h"
+#include "io/lightmaps/page_encodings.h"
 
 namespace radbake {
 

@@ -5,7 +5,7 @@
 #include <map>
 
 #include "baker/finish/finish.h"
-#include "io/lightmaps/lightmap_images.h"
+#include "io/lightmaps/page_encodings.h"
 #include "uv/texel_coverage.h"
 
 namespace radbake::test {

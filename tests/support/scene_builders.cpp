@@ -14,7 +14,7 @@
 #include "baker/surface/surface.h"
 #include "io/gltf/gltf_loader.h"
 #include "io/gltf/gltf_writer.h"
-#include "io/lightmaps/lightmap_images.h"
+#include "io/lightmaps/page_encodings.h"
 
 namespace radbake::test {
 

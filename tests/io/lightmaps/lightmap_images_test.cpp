@@ -1,8 +1,14 @@
 // Lightmap EXR pages keep the baked values: half float where that is exact enough, full float
-// where half would overflow (daylight illuminance passes 65504 lux).
+// where half would overflow (daylight illuminance passes 65504 lux). Every page is written in
+// every encoding of page_encodings(), under the names LightmapFiles gives, and each file reads
+// back as the page: the seam a new encoding plugs into.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <filesystem>
+
 #include "io/lightmaps/lightmap_images.h"
+#include "io/lightmaps/page_encodings.h"
 #include "support/images.h"
 #include "support/scene_builders.h"
 
@@ -32,6 +38,34 @@ TEST(LightmapImages, DaylightValuesAreFullFloatNotInfinity) {
   LightmapPage back = read_lightmap_exr(path);
   EXPECT_FLOAT_EQ(back.texels[5].x, 110000.0f);
   EXPECT_FLOAT_EQ(back.texels[5].y, 98765.4f);
+}
+
+TEST(PageEncodings, EveryPageInEveryEncodingUnderItsNameReadsBack) {
+  const std::string folder = test::fresh_folder("page_encodings");
+  const std::vector<LightmapPage> pages = {page_with({100, 50, 25}), page_with({200, 200, 200})};
+  const LightmapFiles files = write_lightmaps(pages, folder, "scene", "irradiance", "lx", 200.0f);
+  ASSERT_EQ(files.files.size(), pages.size());
+  ASSERT_GE(page_encodings().size(), 2u);
+  for (size_t p = 0; p < pages.size(); ++p) {
+    ASSERT_EQ(files.files[p].size(), page_encodings().size());
+    for (size_t k = 0; k < page_encodings().size(); ++k) {
+      EXPECT_EQ(files.files[p][k], "scene_lightmap_" + std::to_string(p) + page_encodings()[k].extension);
+      EXPECT_TRUE(std::filesystem::is_regular_file(folder + "/" + files.files[p][k])) << files.files[p][k];
+    }
+    EXPECT_EQ(files.texture(p), "scene_lightmap_" + std::to_string(p) + ".png");
+    // The EXR holds the lux themselves (exact in half float here); the PNG the sRGB encoding of
+    // lux / 200, to its 8 bits (half a step of 255).
+    const LightmapPage exr = read_lightmap_exr(folder + "/scene_lightmap_" + std::to_string(p) + ".exr");
+    EXPECT_FLOAT_EQ(exr.texels[5].x, pages[p].texels[5].x);
+    EXPECT_FLOAT_EQ(exr.texels[5].z, pages[p].texels[5].z);
+    const std::vector<uint8_t> png = test::read_png_rgb(folder + "/" + files.texture(p));
+    ASSERT_EQ(png.size(), 16u * 3);
+    for (int c = 0; c < 3; ++c) {
+      const double linear = pages[p].texels[5][c] / 200.0;
+      const double srgb = linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1 / 2.4) - 0.055;
+      EXPECT_NEAR(png[5 * 3 + size_t(c)], 255 * srgb, 0.5 + 1e-6) << "page " << p << ", channel " << c;
+    }
+  }
 }
 
 }  // namespace
