@@ -194,18 +194,18 @@ OptionGroup<B> bake_group() {
                  FIELD(bake.solve.solver), "shooting | gauss-seidel | jacobi: how the radiosity equation is solved"),
        threads,
        number<B>("--seed", "N", 0, double(1L << 53), "", FIELD(bake.seed), "random seed; same seed, same output"),
-       number<B>("--gather-rays", "N", 1, 1 << 20, "rays", FIELD(bake.gather_rays),
+       number<B>("--gather-rays", "N", 1, 1 << 20, "rays", FIELD(bake.gather.rays),
                  "hemisphere rays per texel for indirect light"),
        run_option(number<B>("--max-rays", "N", 1, 1e18, "rays", FIELD(max_rays),
                  "refuse a bake whose form factors, gather, path tracing, probes, sensors or hours are estimated to "
                  "cast more rays in one stage (the default is about an hour on 2 cores)")),
-       flag<B>("--no-near-field", false, FIELD(bake.near_field),
+       flag<B>("--no-near-field", false, FIELD(bake.gather.near_field),
                "gather rays landing within three widths of the struck patch take the patch's mean like the others, not "
                "the struck texel's own light (for measuring what the near field does; docs/accuracy.md)"),
-       number<B>("--gather-filter", "N", 0, 16, "texels", FIELD(bake.gather_filter.radius),
+       number<B>("--gather-filter", "N", 0, 16, "texels", FIELD(bake.gather.filter.radius),
                  "average each texel's gathered light with its neighbours up to N texels away on the same surface, "
                  "closing in where other surfaces are near; 0 = off"),
-       number<B>("--gather-filter-validity", "X", 0.01, 100, "", FIELD(bake.gather_filter.validity),
+       number<B>("--gather-filter-validity", "X", 0.01, 100, "", FIELD(bake.gather.filter.validity),
                  "the filter's reach near other surfaces: neighbours within X times the harmonic mean distance of what "
                  "the gather rays struck"),
        choice<B>("--form-factors", "METHOD",

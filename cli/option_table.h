@@ -72,7 +72,7 @@ std::string option_line(const std::string& name, const std::string& help);
 
 // ---- Rows ----
 // `field` is a lambda from the target to the field the row sets, written for both a const and a
-// mutable target: [](auto& c) -> auto& { return c.bake.gather_rays; }.
+// mutable target: [](auto& c) -> auto& { return c.bake.gather.rays; }.
 
 // A row's words: what --help shows of it.
 template <class Target>

@@ -273,10 +273,14 @@ GatherInputs gather_inputs(const Elements& e, const Patches& patches, const Surf
   return {std::move(patch_indirect), near_reach(e, patches, surface), std::move(reflected_direct)};
 }
 
-GatherTrace trace_gather(const Elements& e, const Patches& patches, const Surface& surface, const RayTracer& tracer,
-                         const GatherInputs& inputs, const std::vector<Rgb>& patch_exitance,
-                         const std::vector<Rgb>& direct, uint32_t rays, bool near_field, uint64_t seed,
-                         ElementRange range, bool directions) {
+GatherTrace trace_gather(const BakeGeometry& geometry, const Patches& patches, const GatherInputs& inputs,
+                         const std::vector<Rgb>& patch_exitance, const std::vector<Rgb>& direct,
+                         const GatherOptions& options, uint64_t seed, ElementRange range, bool directions) {
+  const Elements& e = geometry.elements;
+  const Surface& surface = *geometry.surface;
+  const RayTracer& tracer = *geometry.tracer;
+  const uint32_t rays = options.rays;
+  const bool near_field = options.near_field;
   range = range.within(e.size());
   GatherTrace out;
   out.irradiance.resize(range.size());
@@ -353,8 +357,10 @@ GatherTrace trace_gather(const Elements& e, const Patches& patches, const Surfac
 
 GatheredLight finish_gather(const Elements& e, const Patches& patches, const PatchTransport& transport,
                             const GatherInputs& inputs, const std::vector<Rgb>& patch_exitance,
-                            const std::vector<Rgb>& direct, uint32_t rays, bool near_field, GatherTrace whole,
+                            const std::vector<Rgb>& direct, const GatherOptions& options, GatherTrace whole,
                             GatherStats* stats) {
+  const uint32_t rays = options.rays;
+  const bool near_field = options.near_field;
   GatheredLight out;
   out.irradiance = std::move(whole.irradiance);
   out.harmonic_distance = std::move(whole.harmonic_distance);

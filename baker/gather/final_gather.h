@@ -14,6 +14,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "baker/gather/gather_filter.h"
+#include "baker/surface/bake_geometry.h"
 #include "baker/surface/elements.h"
 #include "baker/surface/light_direction.h"
 #include "baker/surface/ray_fates.h"
@@ -77,19 +79,26 @@ struct GatherInputs {
 GatherInputs gather_inputs(const Elements& elements, const Patches& patches, const Surface& surface,
                            std::vector<Rgb> patch_indirect, const std::vector<Rgb>& direct);
 
+// The final gather's settings (the quality presets set them, quality_presets.cpp).
+struct GatherOptions {
+  uint32_t rays = 256;          // hemisphere rays per texel for indirect light
+  bool near_field = true;       // rays landing close by take the texel's exitance; false: every ray
+                                // lands far (its struck texel's reflected direct light and its
+                                // patch's reflected indirect light)
+  GatherFilterOptions filter;   // texel-space filtering of the gather's noise, after it
+};
+
 // `patch_exitance`: the solve's reflected exitance per patch; `direct`: irradiance per element
-// from lights and emitters, lux; `near_field` false: every ray lands far (its struck texel's
-// reflected direct light and its patch's reflected indirect light).
-GatherTrace trace_gather(const Elements& elements, const Patches& patches, const Surface& surface,
-                         const RayTracer& tracer, const GatherInputs& inputs, const std::vector<Rgb>& patch_exitance,
-                         const std::vector<Rgb>& direct, uint32_t rays, bool near_field, uint64_t seed,
-                         ElementRange range, bool directions = false);
+// from lights and emitters, lux.
+GatherTrace trace_gather(const BakeGeometry& geometry, const Patches& patches, const GatherInputs& inputs,
+                         const std::vector<Rgb>& patch_exitance, const std::vector<Rgb>& direct,
+                         const GatherOptions& options, uint64_t seed, ElementRange range, bool directions = false);
 
 // The near field solved and its light balanced over the patches, from the traces of all the
 // ranges in element order (`whole`: their irradiance, harmonic distance and landings joined).
 GatheredLight finish_gather(const Elements& elements, const Patches& patches, const PatchTransport& transport,
                             const GatherInputs& inputs, const std::vector<Rgb>& patch_exitance,
-                            const std::vector<Rgb>& direct, uint32_t rays, bool near_field, GatherTrace whole,
+                            const std::vector<Rgb>& direct, const GatherOptions& options, GatherTrace whole,
                             GatherStats* stats = nullptr);
 
 }  // namespace radbake

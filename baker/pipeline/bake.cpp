@@ -86,11 +86,13 @@ std::vector<size_t> texel_chunk_starts(const Elements& elements, bool by_page) {
 // every process gets all of it (the form factors and the gather read it anywhere). Also the lm,
 // mean of RGB, that punctual lights and the sky land on valid elements (where light passes
 // through, only what stops there: the rest lands further on), summed chunk by chunk.
-std::vector<Rgb> shared_direct_light(const Scene& scene, const Elements& elements, const Surface& surface,
-                                     const MaterialSampler& materials, const RayTracer& tracer,
-                                     const BakeOptions& options, const EffectPlan& plan, Progress& progress,
-                                     double& delivered_power, std::vector<LightDirection>& directions,
-                                     double& sky_noise) {
+std::vector<Rgb> shared_direct_light(const Scene& scene, const BakeGeometry& geometry, const BakeOptions& options,
+                                     const EffectPlan& plan, Progress& progress, double& delivered_power,
+                                     std::vector<LightDirection>& directions, double& sky_noise) {
+  const Elements& elements = geometry.elements;
+  const Surface& surface = *geometry.surface;
+  const MaterialSampler& materials = *geometry.materials;
+  const RayTracer& tracer = *geometry.tracer;
   DirectLightOptions direct = options.direct;
   direct.shadow_rays = plan.shadow_rays;
   direct.cull_unlit = !plan.exhaustive;
@@ -206,10 +208,13 @@ std::string slice_stage_name(int index, int count) {
 // process joins them and finishes the gather (finish_gather). The others, and a run that bakes a
 // slice (then StoppedEarly), get nothing. With merge_slices, the chunks come from the slices saved
 // in the store instead.
-std::optional<GatheredLight> shared_gather(const Elements& elements, const Patches& patches, const Surface& surface,
-                                           const RayTracer& tracer, const PatchTransport& transport,
-                                           const std::vector<Rgb>& patch_exitance, const std::vector<Rgb>& direct,
-                                           const BakeOptions& options, Progress& progress, GatherStats* stats) {
+std::optional<GatheredLight> shared_gather(const BakeGeometry& geometry, const Patches& patches,
+                                           const PatchTransport& transport, const std::vector<Rgb>& patch_exitance,
+                                           const std::vector<Rgb>& direct, const BakeOptions& options,
+                                           Progress& progress, GatherStats* stats) {
+  const Elements& elements = geometry.elements;
+  const Surface& surface = *geometry.surface;
+  const RayTracer& tracer = *geometry.tracer;
   const Sharing& sharing = options.sharing;
   Team& team = *sharing.team;
   ByteWriter indirect;
@@ -235,8 +240,7 @@ std::optional<GatheredLight> shared_gather(const Elements& elements, const Patch
   stage.name = "final gather";
   stage.chunks = chunks;
   stage.compute = [&](size_t chunk) {
-    const GatherTrace t = trace_gather(elements, patches, surface, tracer, inputs, patch_exitance, direct,
-                                       options.gather_rays, options.near_field, options.seed,
+    const GatherTrace t = trace_gather(geometry, patches, inputs, patch_exitance, direct, options.gather, options.seed,
                                        ElementRange{starts[chunk], starts[chunk + 1]}, directional);
     ByteWriter out;
     out.put_vector(t.irradiance);
@@ -301,16 +305,19 @@ std::optional<GatheredLight> shared_gather(const Elements& elements, const Patch
   }
   if (!team.first()) return std::nullopt;
   for (const auto& l : landings) whole.landings.insert(whole.landings.end(), l.begin(), l.end());
-  return finish_gather(elements, patches, transport, inputs, patch_exitance, direct, options.gather_rays,
-                       options.near_field, std::move(whole), stats);
+  return finish_gather(elements, patches, transport, inputs, patch_exitance, direct, options.gather, std::move(whole),
+                       stats);
 }
 
 // Light between surfaces: patches, form factors and the radiosity solve, then the final gather
 // at texel resolution. Adds the indirect light to result.direct into result.irradiance and fills
 // the report's solve figures and energy balance.
-void interreflect(const Elements& elements, const Surface& surface, const RayTracer& tracer, const BakeOptions& options,
-                  const EffectPlan& plan, double delivered_power, const FiniteCheckContext& checked, Progress& progress,
+void interreflect(const BakeGeometry& geometry, const BakeOptions& options, const EffectPlan& plan,
+                  double delivered_power, const FiniteCheckContext& checked, Progress& progress,
                   const PreviewCallback& on_preview, BakeResult& result) {
+  const Elements& elements = geometry.elements;
+  const Surface& surface = *geometry.surface;
+  const RayTracer& tracer = *geometry.tracer;
   BakeReport& report = result.report;
   InterreflectionObserver observer;
   if (on_preview && options.preview_every > 0) {
@@ -345,8 +352,8 @@ void interreflect(const Elements& elements, const Surface& surface, const RayTra
   GatherStats gather_stats;
   StageClock clock(report.stage_times);
   std::optional<GatheredLight> gathered = clock.run("final gather", [&] {
-    return shared_gather(elements, patches, surface, tracer, light_between.transport, solution.exitance, result.direct,
-                         options, progress, &gather_stats);
+    return shared_gather(geometry, patches, light_between.transport, solution.exitance, result.direct, options, progress,
+                         &gather_stats);
   });
   if (!gathered) return;
   result.open_view = std::move(gathered->open_view);
@@ -354,13 +361,13 @@ void interreflect(const Elements& elements, const Surface& surface, const RayTra
     std::vector<uint8_t> gathering(elements.size());
     for (size_t i = 0; i < elements.size(); ++i) gathering[i] = patches.patch_of_element[i] != UINT32_MAX;
     return filter_gathered(elements, surface, gathered->irradiance, gathered->harmonic_distance, gathering,
-                           options.gather_filter);
+                           options.gather.filter);
   });
   check_element_values("the final gather", result.irradiance, checked, patches.patch_of_element);
   if (options.directional != Directional::None)
     result.light_directions = total_light_directions(result.light_directions, gathered->mean_direction, result.irradiance);
   for (size_t i = 0; i < elements.size(); ++i) result.irradiance[i] += result.direct[i];
-  const TexelFates fates = options.gather_rays > 0 ? TexelFates{result.open_view, gathered->lost_share} : TexelFates{};
+  const TexelFates fates = options.gather.rays > 0 ? TexelFates{result.open_view, gathered->lost_share} : TexelFates{};
   report.balance = energy_balance(elements, patches, light_between.transport, delivered_power, result.irradiance, fates);
 
   report.patches = patches.size();
@@ -382,20 +389,20 @@ void interreflect(const Elements& elements, const Surface& surface, const RayTra
 
 // The baker's way: direct light from lights and emitting surfaces at every texel, then, when the
 // plan calls for it, the light between surfaces (interreflect).
-void compute_radiosity(const Scene& scene, const Elements& elements, const Surface& surface,
-                       const MaterialSampler& materials, const RayTracer& tracer, const BakeOptions& options,
+void compute_radiosity(const Scene& scene, const BakeGeometry& geometry, const BakeOptions& options,
                        const EffectPlan& plan, const FiniteCheckContext& checked, Progress& progress,
                        const PreviewCallback& on_preview, BakeResult& result) {
+  const Elements& elements = geometry.elements;
   StageClock clock(result.report.stage_times);
   double delivered_power = 0;
   result.direct = clock.run("direct light", [&] {
-    return shared_direct_light(scene, elements, surface, materials, tracer, options, plan, progress, delivered_power,
-                               result.light_directions, result.report.sky_noise);
+    return shared_direct_light(scene, geometry, options, plan, progress, delivered_power, result.light_directions,
+                               result.report.sky_noise);
   });
   check_element_values("direct light", result.direct, checked);
   if (options.sharing.stop_after == StopAfter::DirectLight) throw StoppedEarly("direct light");
   if (plan.interreflection) {
-    interreflect(elements, surface, tracer, options, plan, delivered_power, checked, progress, on_preview, result);
+    interreflect(geometry, options, plan, delivered_power, checked, progress, on_preview, result);
   } else {
     result.irradiance = result.direct;
     result.patch_of_element.assign(elements.size(), UINT32_MAX);
@@ -417,9 +424,12 @@ void refuse_overbright_materials(const Scene& scene, float emission_scale) {
 }
 
 // The reference's way: every light and every bounce by the path tracer, whatever the plan says.
-void compute_path_traced(const Scene& scene, const Elements& elements, const Surface& surface,
-                         const MaterialSampler& materials, const RayTracer& tracer, const BakeOptions& options,
+void compute_path_traced(const Scene& scene, const BakeGeometry& geometry, const BakeOptions& options,
                          const FiniteCheckContext& checked, Progress& progress, BakeResult& result) {
+  const Elements& elements = geometry.elements;
+  const Surface& surface = *geometry.surface;
+  const MaterialSampler& materials = *geometry.materials;
+  const RayTracer& tracer = *geometry.tracer;
   BakeReport& report = result.report;
   StageClock clock(report.stage_times);
   PathTraced traced = clock.run("path tracing", [&] {
@@ -439,9 +449,12 @@ void compute_path_traced(const Scene& scene, const Elements& elements, const Sur
 
 // What is read from the finished light, by the surfaces' `exitance` (lm/m2): the sensors and the
 // work plane, the eyes' views and glare, the light probes.
-void take_readings(const Scene& scene, const Elements& elements, const Surface& surface, const MaterialSampler& materials,
-                   const RayTracer& tracer, const BakeOptions& options, const std::vector<Rgb>& exitance,
-                   Progress& progress, BakeResult& result) {
+void take_readings(const Scene& scene, const BakeGeometry& geometry, const BakeOptions& options,
+                   const std::vector<Rgb>& exitance, Progress& progress, BakeResult& result) {
+  const Elements& elements = geometry.elements;
+  const Surface& surface = *geometry.surface;
+  const MaterialSampler& materials = *geometry.materials;
+  const RayTracer& tracer = *geometry.tracer;
   BakeReport& report = result.report;
   StageClock clock(report.stage_times);
   if (!options.sensors.empty() || options.work_plane.enabled) {
@@ -452,7 +465,7 @@ void take_readings(const Scene& scene, const Elements& elements, const Surface& 
     }
     SensorReadings readings = clock.run("sensors", [&] {
       if (options.method != Method::PathTrace)
-        return sensor_illuminance(result.sensors, scene.lights, elements, exitance, surface, tracer, options.sky,
+        return sensor_illuminance(result.sensors, scene.lights, geometry, exitance, options.sky,
                                   options.sky.enabled ? SkyPortals(surface, materials) : SkyPortals(), options.sensor,
                                   options.seed, progress);
       // The reference: whole paths from each sensor, as many as its sky rays, sharing nothing
@@ -483,8 +496,7 @@ void take_readings(const Scene& scene, const Elements& elements, const Surface& 
   if (options.probes.enabled) {
     result.probes = clock.run("light probes", [&] {
       LightProbes probes = place_probes(surface, tracer, options.probes);
-      light_probes(probes, elements, exitance, surface, materials, scene.lights, options.sky, tracer, options.probes,
-                   options.seed, progress);
+      light_probes(probes, geometry, exitance, scene.lights, options.sky, options.probes, options.seed, progress);
       return probes;
     });
     report.light_probes = result.probes.probes.size();
@@ -553,7 +565,6 @@ BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& given
 
   BakeGeometry geometry = bake_geometry(scene, atlas, options, plan, progress, report.stage_times);
   const Surface& surface = *geometry.surface;
-  const MaterialSampler& materials = *geometry.materials;
   const std::unique_ptr<RayTracer>& tracer = geometry.tracer;
   Elements& elements = geometry.elements;
   if (options.work_plane.enabled) result.work_plane = work_plane(scene, surface, *tracer, options.work_plane);
@@ -563,9 +574,9 @@ BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& given
   report.plan = plan.decisions;
   report.warnings = plan.warnings;
   if (options.method == Method::PathTrace) {
-    compute_path_traced(scene, elements, surface, materials, *tracer, options, checked, progress, result);
+    compute_path_traced(scene, geometry, options, checked, progress, result);
   } else {
-    compute_radiosity(scene, elements, surface, materials, *tracer, options, plan, checked, progress, on_preview, result);
+    compute_radiosity(scene, geometry, options, plan, checked, progress, on_preview, result);
   }
   // The team's rays (the others' counted here, the first's at the end: it goes on to the sensors)
   // and each process's peak memory so far, for the report.
@@ -595,7 +606,7 @@ BakeResult bake(const Scene& scene, const Atlas& atlas, const BakeOptions& given
   check_vertex_values(result.vertex_values, scene);
   if (!options.sensors.empty() || options.work_plane.enabled || !options.views.empty() || options.probes.enabled) {
     const std::vector<Rgb> exitance = radiosity.empty() ? radiosity_of(elements, result.irradiance) : radiosity;
-    take_readings(scene, elements, surface, materials, *tracer, options, exitance, progress, result);
+    take_readings(scene, geometry, options, exitance, progress, result);
   }
   result.display_camera = clock.run("display camera", [&] { return display_camera(scene, surface, *tracer); });
   result.display_view = clock.run("display view", [&] { return display_view(scene, result.display_camera, surface, *tracer); });

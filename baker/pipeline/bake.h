@@ -10,25 +10,12 @@
 
 #include "baker/pipeline/bake_options.h"
 #include "baker/pipeline/bake_result.h"
-#include "baker/surface/elements.h"
-#include "baker/surface/material_sampler.h"
-#include "baker/surface/ray_tracer.h"
-#include "baker/surface/surface.h"
+#include "baker/surface/bake_geometry.h"
 #include "base/progress.h"
 #include "base/scene.h"
 #include "uv/atlas.h"
 
 namespace radbake {
-
-// What every stage needs before the light: the surface, its materials, the ray tracer and the
-// elements with their samples placed (held by pointer: the sampler and the tracer refer to the
-// surface).
-struct BakeGeometry {
-  std::unique_ptr<Surface> surface;
-  std::unique_ptr<MaterialSampler> materials;
-  std::unique_ptr<RayTracer> tracer;
-  Elements elements;
-};
 
 // This process's peak resident set so far, bytes (what the report and each rank's share state).
 uint64_t peak_resident_bytes();

@@ -7,7 +7,7 @@
 
 #include "baker/direct/direct_light.h"
 #include "baker/finish/directional_lightmaps.h"
-#include "baker/gather/gather_filter.h"
+#include "baker/gather/final_gather.h"
 #include "baker/pipeline/plan.h"
 #include "baker/readings/light_probes.h"
 #include "baker/readings/luminance_view.h"
@@ -47,9 +47,7 @@ struct BakeOptions {
   FormFactorOptions form_factors;
   SubdivisionOptions subdivision;
   SolveOptions solve;
-  uint32_t gather_rays = 256;   // hemisphere rays per texel for indirect light
-  GatherFilterOptions gather_filter;  // texel-space filtering of the gather's noise
-  bool near_field = true;       // gather rays landing close by take the texel's exitance (final_gather.h)
+  GatherOptions gather;         // the final gather (final_gather.h)
   SkyLight sky;                 // a sky lighting the scene besides its lamps (sky_light.h); radiosity only
   std::vector<Sensor> sensors;  // points in the air to measure illuminance at (sensor_points.h)
   std::vector<EyeView> views;   // eyes to render a fisheye luminance image and its glare for (luminance_view.h)

@@ -69,7 +69,7 @@ std::vector<StageRays> estimate_stage_rays(const BakeOptions& o, const RayCounts
     } else {
       stages.push_back({"form factors", "--patch-rays", patches * o.form_factors.rays_per_patch});
     }
-    stages.push_back({"final gather", "--gather-rays", texels * o.gather_rays});
+    stages.push_back({"final gather", "--gather-rays", texels * o.gather.rays});
   }
   if (o.probes.enabled) {
     const double per_probe = double(o.probes.rays) + o.probes.emitter_samples;

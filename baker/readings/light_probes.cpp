@@ -122,10 +122,13 @@ LightProbes place_probes(const Surface& surface, const RayTracer& tracer, const 
   return out;
 }
 
-void light_probes(LightProbes& probes, const Elements& elements, const std::vector<Rgb>& exitance,
-                  const Surface& surface, const MaterialSampler& materials, const std::vector<Light>& lights,
-                  const SkyLight& sky, const RayTracer& tracer, const ProbeOptions& options, uint64_t seed,
+void light_probes(LightProbes& probes, const BakeGeometry& geometry, const std::vector<Rgb>& exitance,
+                  const std::vector<Light>& lights, const SkyLight& sky, const ProbeOptions& options, uint64_t seed,
                   Progress& progress) {
+  const Elements& elements = geometry.elements;
+  const Surface& surface = *geometry.surface;
+  const MaterialSampler& materials = *geometry.materials;
+  const RayTracer& tracer = *geometry.tracer;
   const EmitterTable emitters(surface, materials);
   const SkyView view(sky);
   const uint32_t rays = std::max<uint32_t>(1, options.rays), samples = std::max<uint32_t>(1, options.emitter_samples);

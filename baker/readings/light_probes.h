@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "baker/surface/bake_geometry.h"
 #include "baker/surface/elements.h"
 #include "baker/surface/material_sampler.h"
 #include "baker/surface/ray_tracer.h"
@@ -60,9 +61,8 @@ LightProbes place_probes(const Surface& surface, const RayTracer& tracer, const 
 
 // Fills every probe's coefficients from the bake: `exitance` per element (emission plus reflected
 // light, lm/m2), the scene's punctual lights, the sky (may be disabled).
-void light_probes(LightProbes& probes, const Elements& elements, const std::vector<Rgb>& exitance,
-                  const Surface& surface, const MaterialSampler& materials, const std::vector<Light>& lights,
-                  const SkyLight& sky, const RayTracer& tracer, const ProbeOptions& options, uint64_t seed,
+void light_probes(LightProbes& probes, const BakeGeometry& geometry, const std::vector<Rgb>& exitance,
+                  const std::vector<Light>& lights, const SkyLight& sky, const ProbeOptions& options, uint64_t seed,
                   Progress& progress);
 
 }  // namespace radbake

@@ -32,9 +32,12 @@ SensorHits sensor_gather_hits(const Sensor& s, size_t index, const Elements& ele
 }
 
 SensorReadings sensor_illuminance(const std::vector<Sensor>& sensors, const std::vector<Light>& lights,
-                                  const Elements& elements, const std::vector<Rgb>& exitance, const Surface& surface,
-                                  const RayTracer& tracer, const SkyLight& sky, const SkyPortals& portals,
-                                  const SensorOptions& options, uint64_t seed, Progress& progress) {
+                                  const BakeGeometry& geometry, const std::vector<Rgb>& exitance, const SkyLight& sky,
+                                  const SkyPortals& portals, const SensorOptions& options, uint64_t seed,
+                                  Progress& progress) {
+  const Elements& elements = geometry.elements;
+  const Surface& surface = *geometry.surface;
+  const RayTracer& tracer = *geometry.tracer;
   std::vector<SensorBatches> batches(sensors.size(), SensorBatches{});
   if (sky.enabled) {
     std::vector<Vec3> points, normals;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "baker/direct/sky_light.h"
+#include "baker/surface/bake_geometry.h"
 #include "baker/surface/elements.h"
 #include "baker/surface/ray_tracer.h"
 #include "baker/surface/surface.h"
@@ -50,8 +51,8 @@ struct SensorReadings {
   std::vector<double> lux, standard_error;
 };
 SensorReadings sensor_illuminance(const std::vector<Sensor>& sensors, const std::vector<Light>& lights,
-                                  const Elements& elements, const std::vector<Rgb>& exitance, const Surface& surface,
-                                  const RayTracer& tracer, const SkyLight& sky, const SkyPortals& portals,
-                                  const SensorOptions& options, uint64_t seed, Progress& progress);
+                                  const BakeGeometry& geometry, const std::vector<Rgb>& exitance, const SkyLight& sky,
+                                  const SkyPortals& portals, const SensorOptions& options, uint64_t seed,
+                                  Progress& progress);
 
 }  // namespace radbake

@@ -54,7 +54,7 @@ TEST(CadEngine, TheTwoCylinderEngineUnderOnePointLightBakesFinite) {
   bulb.position = {-0.80f, 297.38f, -2.37f};
   scene.lights.push_back(bulb);
   BakeOptions options;
-  options.gather_rays = 4;  // the NaN came from the form factors; the gather only costs time here
+  options.gather.rays = 4;  // the NaN came from the form factors; the gather only costs time here
   const Atlas atlas = test::unwrap(scene, AtlasOptions{});
   BakeResult result;
   ASSERT_NO_THROW(result = bake(scene, atlas, options));

@@ -44,7 +44,7 @@ TEST_P(Determinism, SameSeedAndAnyThreadCountGiveBitIdenticalPages) {
   // Few rays: this case is about which numbers come out, not how good they are.
   options.form_factors.rays_per_patch = 256;
   options.form_factors.hemicube_resolution = 16;
-  options.gather_rays = 32;
+  options.gather.rays = 32;
   options.threads = 2;
   const BakeResult first = bake(scene, atlas, options);
   test::expect_finite_and_non_negative(first);

@@ -88,7 +88,7 @@ void PrintTo(const Case& c, std::ostream* out) { *out << c.name; }
 // texels (what its patch budget gives the Cornell box on a 256 page), more rays.
 BakeOptions production() {
   BakeOptions options;
-  options.gather_rays = 1024;
+  options.gather.rays = 1024;
   options.form_factors.rays_per_patch = 4096;
   options.direct.area_light_rays = 64;
   options.direct.punctual_rays = 16;

@@ -60,7 +60,7 @@ BakeResult bake_room(bool one_face) {
   // gather, whose texels along the sun patch's edge differed by up to 18% between seeds).
   BakeOptions options;
   options.direct.punctual_rays = 16;
-  options.gather_rays = 1024;
+  options.gather.rays = 1024;
   test::Baked b = test::bake_scene(room(one_face), {16, 512, 2}, options);
   test::expect_finite_and_non_negative(b.result);
   return std::move(b.result);

@@ -351,7 +351,7 @@ TEST(Cie171, Case5_6LightReflectedByADiffuseFloor) {
   atlas.texel_density = 4;  // 25 cm texels
   BakeOptions options;
   options.keep_direct = true;  // the measured surfaces get no sunlight; keep_direct makes sure
-  options.gather_rays = 16384;  // F is 13% to 45%: 16,384 rays keep a texel's noise near 1%
+  options.gather.rays = 16384;  // F is 13% to 45%: 16,384 rays keep a texel's noise near 1%
   const BakeResult r = test::bake_scene(scene, atlas, options).result;
   const Elements& e = r.elements;
   std::vector<double> percent(e.size());
@@ -442,7 +442,7 @@ TEST(Cie171, Case5_7AnObstructionHidesPartOfAReflectingWall) {
   options.keep_direct = true;  // the sun falls on the floor too: only the reflected part is measured
   // The floor sees only the top of the lit wall over the block (from 1.67 m up at G, 2.2 m at I:
   // F 3%): with 65,536 gather rays its worst texel is 3.1% off, with 32,768 3.4%, with 16,384 4.9%.
-  options.gather_rays = 65536;
+  options.gather.rays = 65536;
   const BakeResult r = test::bake_scene(scene, atlas, options).result;
   const Elements& e = r.elements;
   std::vector<double> percent(e.size());

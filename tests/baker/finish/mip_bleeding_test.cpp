@@ -14,7 +14,7 @@ namespace {
 TEST(MipBleeding, WithoutMipmapsNoChartReadsAnotherAndWithThemItDoes) {
   const Scene scene = load_gltf(test::source_path("samples/cornell_box/cornell_box.gltf")).scene;
   BakeOptions options;
-  options.gather_rays = 64;  // the page's noise does not matter here, only which chart a read reaches
+  options.gather.rays = 64;  // the page's noise does not matter here, only which chart a read reaches
   for (int padding : {2, 4}) {
     const test::MipBleedTable t = test::measure_mip_bleeding(scene, 128, padding, options);
     ASSERT_GE(t.levels.size(), 3u);

@@ -34,7 +34,7 @@ TEST(FarHits, TakeTheLightOfTheTexelTheyStrike) {
   atlas.texel_density = 8;
   BakeOptions options;
   options.patches.block_size = 16;
-  options.gather_rays = 1024;
+  options.gather.rays = 1024;
   const BakeResult baked = test::bake_scene(shaded_floor(), atlas, options).result;
   BakeOptions traced = options;
   traced.method = Method::PathTrace;

@@ -29,9 +29,9 @@ Scene block_in_the_sun() {
 
 BakeOptions gathering(uint32_t rays, int filter_radius, uint64_t seed, float validity = GatherFilterOptions{}.validity) {
   BakeOptions options;
-  options.gather_rays = rays;
-  options.gather_filter.radius = filter_radius;
-  options.gather_filter.validity = validity;
+  options.gather.rays = rays;
+  options.gather.filter.radius = filter_radius;
+  options.gather.filter.validity = validity;
   options.seed = seed;
   return options;
 }

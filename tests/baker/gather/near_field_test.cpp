@@ -50,12 +50,12 @@ TEST(NearField, MakesWhereSurfacesMeetTheFloorAsThePathTracerSees) {
   traced.path_trace.samples = 2048;
   const BakeResult reference = test::bake_scene(scene, atlas, traced).result;
   BakeOptions options;
-  options.gather_rays = 1024;
+  options.gather.rays = 1024;
   // 16-texel (42 cm) patches, what the budget gives here: the automatic size would now take 8-texel
   // ones, within the box's 28 cm mean free path, where the near field has less to mend.
   options.patches.block_size = 16;
   const Error with = against(reference, test::bake_scene(scene, atlas, options).result);
-  options.near_field = false;
+  options.gather.near_field = false;
   const Error without = against(reference, test::bake_scene(scene, atlas, options).result);
   RecordProperty("contact_bias_with", std::to_string(with.bias));
   RecordProperty("contact_bias_without", std::to_string(without.bias));

@@ -42,7 +42,7 @@ struct Room {
   BakeOptions options;
   Room() {
     atlas.max_page_size = 64;
-    options.gather_rays = 32;
+    options.gather.rays = 32;
     options.form_factors.rays_per_patch = 256;
     options.solve.tolerance = 1e-7;
     options.sharing.solve_save_seconds = 0;

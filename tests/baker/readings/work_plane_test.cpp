@@ -16,7 +16,7 @@ BakeOptions lamp_and_work_plane(Scene& scene, Vec3 lamp_at) {
   lamp.position = lamp_at;
   scene.lights.push_back(lamp);
   BakeOptions options;
-  options.gather_rays = 4;  // the readings' values are not what these tests look at
+  options.gather.rays = 4;  // the readings' values are not what these tests look at
   options.work_plane.enabled = true;
   options.work_plane.spacing = 0.5;
   return options;

@@ -230,7 +230,7 @@ TEST(SeeThrough, IndirectLightComesThroughGlazingInProportionToItsTransmittance)
     return scene;
   };
   BakeOptions options;
-  options.gather_rays = 1024;
+  options.gather.rays = 1024;
   const Rgb clear = test::mean_irradiance(test::bake_scene(scene_with(1), coarse(), options).result, on_the_floor);
   const Rgb tinted = test::mean_irradiance(test::bake_scene(scene_with(0.7f), coarse(), options).result, on_the_floor);
   RecordProperty("ratio", std::to_string(tinted.x / clear.x));

@@ -25,11 +25,11 @@ size_t valid_elements(const Elements& e) {
 
 TEST(RayFates, AClosedRoomKeepsEveryRayOfTheGatherAndTheFormFactors) {
   BakeOptions options;
-  options.gather_rays = 64;
+  options.gather.rays = 64;
   const test::Baked b = test::bake_scene(test::lit_room(0.5f, {1, 1, 1}, false), test::coarse_atlas(), options);
   const BakeReport& r = b.result.report;
   // Every valid element casts its gather rays, and all of them are counted.
-  EXPECT_EQ(r.gather_rays.total(), uint64_t(valid_elements(b.result.elements)) * options.gather_rays);
+  EXPECT_EQ(r.gather_rays.total(), uint64_t(valid_elements(b.result.elements)) * options.gather.rays);
   EXPECT_EQ(r.gather_rays[RayFate::TookLight], r.gather_rays.total());
   EXPECT_GE(r.form_factor_rays.total(), uint64_t(r.patches) * options.form_factors.rays_per_patch);
   EXPECT_EQ(r.form_factor_rays[RayFate::TookLight], r.form_factor_rays.total());
@@ -84,11 +84,11 @@ TEST(RayFates, TwoSquaresSharingAnEdgeKeepTheShareOfHowellsFormFactor) {
   EXPECT_LT(double(f.front_face_took_none()) / double(f.total()), 1e-3);
 
   BakeOptions options;
-  options.gather_rays = 1024;
+  options.gather.rays = 1024;
   const test::Baked b = test::bake_scene(scene, atlas_options, options);
   const RayFates& g = b.result.report.gather_rays;
   RecordProperty("gather_took_light", std::to_string(g.share(RayFate::TookLight)));
-  EXPECT_EQ(g.total(), uint64_t(valid_elements(b.result.elements)) * options.gather_rays);
+  EXPECT_EQ(g.total(), uint64_t(valid_elements(b.result.elements)) * options.gather.rays);
   EXPECT_NEAR(g.share(RayFate::TookLight), kPerpendicular, 0.02 * kPerpendicular);
   EXPECT_LT(double(g.front_face_took_none()) / double(g.total()), 1e-3);
 }
@@ -99,7 +99,7 @@ TEST(RayFates, ASingleSidedPanelsBackIsCountedAsBackFace) {
   Scene scene = test::lit_room(0.5f, {1, 1, 1}, false);
   test::add_quad(scene, {0.5f, 1.0f, 0.5f}, {0, 0, 1}, {1, 0, 0}, scene.instances[0].material, "panel");  // faces +y
   BakeOptions options;
-  options.gather_rays = 64;
+  options.gather.rays = 64;
   const test::Baked b = test::bake_scene(scene, test::coarse_atlas(), options);
   for (const RayFates* f : {&b.result.report.gather_rays, &b.result.report.form_factor_rays}) {
     EXPECT_GT(f->share(RayFate::BackFace), 0.01);
