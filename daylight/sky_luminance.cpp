@@ -30,10 +30,11 @@ double gradation(const CieParameters& p, double zenith) {
   return c > 0 ? 1 + p.a * std::exp(p.b / c) : 1.0;
 }
 
-// Indicatrix: luminance against the angle from the sun.
-double indicatrix(const CieParameters& p, double from_sun) {
+// Indicatrix: luminance against the angle from the sun, given with its cosine (which a quadrature
+// has before the angle: cos(acos(x)) again cost a third of a year's skies).
+double indicatrix(const CieParameters& p, double from_sun, double cos_from_sun) {
   const double half_pi = 0.5 * M_PI;
-  return 1 + p.c * (std::exp(p.d * from_sun) - std::exp(p.d * half_pi)) + p.e * std::cos(from_sun) * std::cos(from_sun);
+  return 1 + p.c * (std::exp(p.d * from_sun) - std::exp(p.d * half_pi)) + p.e * cos_from_sun * cos_from_sun;
 }
 
 // The Perez sky's two factors, the same shape as the CIE sky's but with no normalising terms
@@ -44,8 +45,7 @@ double perez_gradation(const PerezCoefficients& p, double zenith) {
   return c > 0 ? 1 + p.a * std::exp(p.b / c) : 1.0;
 }
 
-double perez_indicatrix(const PerezCoefficients& p, double from_sun) {
-  const double cos_from_sun = std::cos(from_sun);
+double perez_indicatrix(const PerezCoefficients& p, double from_sun, double cos_from_sun) {
   return 1 + p.c * std::exp(p.d * from_sun) + p.e * cos_from_sun * cos_from_sun;
 }
 
@@ -58,14 +58,14 @@ class SkyShape {
       : sky_(sky), cos_sun_zenith_(std::cos(sun_zenith)), sin_sun_zenith_(std::sin(sun_zenith)) {
     if (sky.model == SkyModel::CieGeneral) {
       const CieParameters& p = cie_parameters(sky.cie_type);
-      normaliser_ = indicatrix(p, sun_zenith) * gradation(p, 0);
+      normaliser_ = indicatrix(p, sun_zenith, cos_sun_zenith_) * gradation(p, 0);
     } else if (sky.model == SkyModel::Perez) {
       const PerezCoefficients& p = sky.perez;
       // With b >= 0, exp(b / cos Z) grows without bound toward the horizon and the luminance with
       // it (to minus infinity when a < 0): coefficients fitted to real skies never do that.
       if (!(p.b < 0))
         throw std::invalid_argument("Perez sky coefficient b must be negative, got " + std::to_string(p.b));
-      normaliser_ = perez_gradation(p, 0) * perez_indicatrix(p, sun_zenith);
+      normaliser_ = perez_gradation(p, 0) * perez_indicatrix(p, sun_zenith, cos_sun_zenith_);
       if (!(normaliser_ > 0))
         throw std::invalid_argument("Perez sky coefficients give a zenith luminance of " + std::to_string(normaliser_) +
                                     " (not positive): nothing to be relative to");
@@ -96,9 +96,9 @@ class SkyShape {
   // L / L_zenith at a point above the horizon whose gradation_at() is `gradation_there`.
   double relative(double gradation_there, double cos_from_sun) const {
     if (sky_.model == SkyModel::Uniform || sky_.model == SkyModel::CieOvercast) return gradation_there;
-    const double from_sun = std::acos(std::fmax(-1.0, std::fmin(1.0, cos_from_sun)));
-    const double towards_sun = sky_.model == SkyModel::Perez ? perez_indicatrix(sky_.perez, from_sun)
-                                                             : indicatrix(cie_parameters(sky_.cie_type), from_sun);
+    const double cosine = std::fmax(-1.0, std::fmin(1.0, cos_from_sun)), from_sun = std::acos(cosine);
+    const double towards_sun = sky_.model == SkyModel::Perez ? perez_indicatrix(sky_.perez, from_sun, cosine)
+                                                             : indicatrix(cie_parameters(sky_.cie_type), from_sun, cosine);
     return gradation_there * towards_sun / normaliser_;
   }
 
