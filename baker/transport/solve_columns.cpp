@@ -139,10 +139,7 @@ ColumnSolution solve_columns(const Patches& patches, const PatchTransport& trans
                                 std::min(kBlock, columns - first), options, c, grey, out.gathered);
   });
   out.converged = true;
-  for (const BlockOutcome& o : outcome) {
-    out.sweeps = std::max(out.sweeps, o.sweeps);
-    out.converged = out.converged && o.converged;
-  }
+  for (const BlockOutcome& o : outcome) out.converged = out.converged && o.converged;
   return out;
 }
 

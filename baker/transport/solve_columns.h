@@ -21,7 +21,6 @@ struct ColumnSolution {
   // [patch * columns + column]: the irradiance each patch gathers from the others' reflected
   // exitance, ambient term included, lux (gathered_irradiance of each column's solution).
   std::vector<Rgb> gathered;
-  size_t sweeps = 0;       // the most any block of columns took
   bool converged = false;  // every column within the tolerance before options.max_iterations sweeps
 };
 

@@ -1,6 +1,7 @@
 #include "io/lightmaps/page_encodings.h"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 
 #include "io/lightmaps/lightmap_images.h"
@@ -21,7 +22,11 @@ const std::vector<PageEncoding>& page_encodings() {
   return encodings;
 }
 
-const PageEncoding& texture_encoding() { return page_encodings()[1]; }
+const PageEncoding& texture_encoding() {
+  static const PageEncoding& png = *std::find_if(page_encodings().begin(), page_encodings().end(),
+                                                 [](const PageEncoding& e) { return e.key == "png"; });
+  return png;
+}
 
 const std::string& LightmapFiles::texture(size_t page) const {
   return files[page][size_t(&texture_encoding() - page_encodings().data())];
