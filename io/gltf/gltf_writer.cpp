@@ -504,7 +504,7 @@ class Writer {
         {"unit", lightmaps_.unit},
         {"pages", pages},
     };
-    for (const PageEncoding& encoding : page_encodings()) info[encoding.key] = encoding.description;
+    for (const PageEncoding& encoding : page_encodings()) info[encoding.key] = encoding.light_read_back;
     info["png_intensity"] = lightmaps_.png_scale;
     info["baked_light"] = "_BAKED_LIGHT: linear RGB per vertex, the quantity in its unit";
     info["color_0"] = color_0;
@@ -531,13 +531,20 @@ class Writer {
   json directional_info() const {
     const DirectionalFiles& d = options_.directional;
     json sets = json::array();
-    for (const DirectionalSet& set : d.sets)
-      sets.push_back({{"coefficient", set.coefficient}, {"exr", set.exr}, {"png", set.png}, {"png_scale", set.scale},
-                      {"png_offset", set.offset}});
-    json info = {{"mode", d.mode}, {"pages", sets},
-                 {"png", "8-bit linear (no sRGB curve); value = png_offset + png_scale * png / 255"},
-                 {"exr", "linear float RGB, the values themselves"},
-                 {"space", "world space of the glTF (+Y up), the texel of a page is the lightmap's (TEXCOORD_1)"}};
+    for (const DirectionalSet& set : d.sets) {
+      json entry = {{"coefficient", set.coefficient}};
+      for (size_t k = 0; k < page_encodings().size(); ++k) {
+        json files = json::array();
+        for (const std::vector<std::string>& page : set.files) files.push_back(page[k]);
+        entry[page_encodings()[k].key] = files;
+      }
+      entry["png_scale"] = set.scale;
+      entry["png_offset"] = set.offset;
+      sets.push_back(entry);
+    }
+    json info = {{"mode", d.mode}, {"pages", sets}};
+    for (const PageEncoding& encoding : page_encodings()) info[encoding.key] = encoding.coefficients_read_back;
+    info["space"] = "world space of the glTF (+Y up), the texel of a page is the lightmap's (TEXCOORD_1)";
     if (d.mode == "sh")
       info["irradiance"] = "lux for a surface of unit normal n: max(0, c0 + c1x n.x + c1y n.y + c1z n.z) per channel; "
                            "at the surface's own normal the lightmap's irradiance; L1 spherical harmonics of the "

@@ -2,9 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 
-#include "io/lightmaps/lightmap_images.h"
+#include "io/lightmaps/page_encodings.h"
 
 namespace radbake {
 namespace {
@@ -25,20 +24,7 @@ float quantile(const std::vector<const std::vector<LightmapPage>*>& sets, double
 
 void write_set(DirectionalSet& set, const std::vector<LightmapPage>& pages, const std::string& folder,
                const std::string& name) {
-  for (size_t p = 0; p < pages.size(); ++p) {
-    const std::string stem = name + "_" + set.coefficient + "_" + std::to_string(p);
-    set.exr.push_back(stem + ".exr");
-    set.png.push_back(stem + ".png");
-    write_exr((std::filesystem::path(folder) / set.exr.back()).string(), pages[p]);
-    const LightmapPage& page = pages[p];
-    std::vector<uint8_t> bytes(page.texels.size() * 3);
-    for (size_t t = 0; t < page.texels.size(); ++t)
-      for (int c = 0; c < 3; ++c) {
-        const float unit = set.scale > 0 ? (page.texels[t][c] - set.offset) / set.scale : 0.0f;
-        bytes[3 * t + size_t(c)] = uint8_t(std::lround(std::clamp(unit, 0.0f, 1.0f) * 255.0f));
-      }
-    write_png((std::filesystem::path(folder) / set.png.back()).string(), page.width, page.height, bytes);
-  }
+  set.files = write_pages(pages, folder, name + "_" + set.coefficient, EightBitRange{set.scale, set.offset, false});
 }
 
 }  // namespace
@@ -49,7 +35,7 @@ DirectionalFiles write_directional(Directional mode, const std::vector<std::vect
   if (mode == Directional::None || sets.empty()) return files;
   if (mode == Directional::Dominant) {
     files.mode = "dominant";
-    DirectionalSet set{"dominant_direction", {}, {}, 2.0f, -1.0f};  // length <= 1: png = dir / 2 + 0.5
+    DirectionalSet set{"dominant_direction", 2.0f, -1.0f, {}};  // length <= 1: png = dir / 2 + 0.5
     write_set(set, sets[0], folder, name);
     files.sets.push_back(set);
     return files;
@@ -62,7 +48,7 @@ DirectionalFiles write_directional(Directional mode, const std::vector<std::vect
                                 quantile({&sets[1], &sets[2], &sets[3]}, 0.9995), 1e-6f});
   const char* names[4] = {"c0", "c1x", "c1y", "c1z"};
   for (size_t k = 0; k < 4; ++k) {
-    DirectionalSet set{std::string("sh_") + names[k], {}, {}, k == 0 ? high - low : 2 * reach, k == 0 ? low : -reach};
+    DirectionalSet set{std::string("sh_") + names[k], k == 0 ? high - low : 2 * reach, k == 0 ? low : -reach, {}};
     write_set(set, sets[k], folder, name);
     files.sets.push_back(set);
   }

@@ -1,7 +1,7 @@
 // Directional lightmap pages as files (--directional, baker/finish/directional_lightmaps.h): each set of
-// pages as linear EXR (the values themselves) and as 8-bit PNG packed the way engines store such
-// data, linearly: value = offset + scale * png / 255, one scale and offset per set, recorded in
-// the glTF's extras.radbake.directional.
+// pages in every page encoding (io/lightmaps/page_encodings.h), 8-bit ones packed the way engines
+// store such data, linearly: value = offset + scale * png / 255, one scale and offset per set,
+// recorded in the glTF's extras.radbake.directional.
 #pragma once
 
 #include <string>
@@ -12,9 +12,10 @@
 namespace radbake {
 
 struct DirectionalSet {
-  std::string coefficient;            // "c0", "c1x", "c1y", "c1z" (sh) or "direction" (dominant)
-  std::vector<std::string> exr, png;  // one per lightmap page, inside the output folder
-  float scale = 1, offset = 0;        // value = offset + scale * png / 255
+  std::string coefficient;  // "sh_c0", "sh_c1x", "sh_c1y", "sh_c1z" or "dominant_direction"
+  float scale = 1, offset = 0;  // value = offset + scale * png / 255
+  // [page][k]: the page's file in page_encodings()[k], inside the output folder.
+  std::vector<std::vector<std::string>> files;
 };
 
 struct DirectionalFiles {

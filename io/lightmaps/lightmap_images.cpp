@@ -150,6 +150,16 @@ void write_lightmap_png(const std::string& path, const LightmapPage& page, float
   write_png(path, page.width, page.height, srgb_pixels(page, 1.0f / scale));
 }
 
+void write_coefficients_png(const std::string& path, const LightmapPage& page, float scale, float offset) {
+  std::vector<uint8_t> bytes(page.texels.size() * 3);
+  for (size_t t = 0; t < page.texels.size(); ++t)
+    for (int c = 0; c < 3; ++c) {
+      const float unit = scale > 0 ? (page.texels[t][c] - offset) / scale : 0.0f;
+      bytes[3 * t + size_t(c)] = uint8_t(std::lround(std::clamp(unit, 0.0f, 1.0f) * 255.0f));
+    }
+  write_png(path, page.width, page.height, bytes);
+}
+
 std::vector<uint8_t> encode_png(int width, int height, const std::vector<uint8_t>& rgb) {
   if (rgb.size() != size_t(width) * size_t(height) * 3) throw std::invalid_argument("PNG pixels do not fill the image");
   std::vector<uint8_t> bytes;

@@ -16,6 +16,9 @@ void write_exr(const std::string& path, const LightmapPage& page);
 // One page as sRGB PNG, `scale` (lux or lm/m2) encoded as white.
 void write_lightmap_png(const std::string& path, const LightmapPage& page, float scale);
 
+// One page of coefficients as linear 8-bit PNG: byte = 255 * (value - offset) / scale, clipped.
+void write_coefficients_png(const std::string& path, const LightmapPage& page, float scale, float offset);
+
 // 8-bit RGB pixels, rows top to bottom, as a PNG (written as they are: no encoding).
 void write_png(const std::string& path, int width, int height, const std::vector<uint8_t>& rgb);
 

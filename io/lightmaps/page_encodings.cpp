@@ -9,15 +9,21 @@
 namespace radbake {
 namespace {
 
-void write_exr_page(const std::string& path, const LightmapPage& page, float) { write_exr(path, page); }
+void write_exr_page(const std::string& path, const LightmapPage& page, const EightBitRange&) { write_exr(path, page); }
+
+void write_png_page(const std::string& path, const LightmapPage& page, const EightBitRange& range) {
+  if (range.srgb) write_lightmap_png(path, page, range.scale);
+  else write_coefficients_png(path, page, range.scale, range.offset);
+}
 
 }  // namespace
 
 const std::vector<PageEncoding>& page_encodings() {
   static const std::vector<PageEncoding> encodings = {
-      {"exr", ".exr", "linear half-float RGB, the quantity in its unit", write_exr_page},
+      {"exr", ".exr", "linear half-float RGB, the quantity in its unit", "linear float RGB, the values themselves",
+       write_exr_page},
       {"png", ".png", "8-bit sRGB-encoded; quantity = srgb_to_linear(png / 255) * MOZ_lightmap.intensity",
-       write_lightmap_png},
+       "8-bit linear (no sRGB curve); value = png_offset + png_scale * png / 255", write_png_page},
   };
   return encodings;
 }
@@ -44,6 +50,19 @@ float automatic_png_scale(const std::vector<LightmapPage>& pages) {
   return scale > 0 && std::isfinite(scale) ? scale : 1.0f;
 }
 
+std::vector<std::vector<std::string>> write_pages(const std::vector<LightmapPage>& pages, const std::string& folder,
+                                                  const std::string& stem, const EightBitRange& range) {
+  std::vector<std::vector<std::string>> files;
+  for (size_t p = 0; p < pages.size(); ++p) {
+    files.emplace_back();
+    for (const PageEncoding& encoding : page_encodings()) {
+      files.back().push_back(stem + "_" + std::to_string(p) + encoding.extension);
+      encoding.write((std::filesystem::path(folder) / files.back().back()).string(), pages[p], range);
+    }
+  }
+  return files;
+}
+
 LightmapFiles write_lightmaps(const std::vector<LightmapPage>& pages, const std::string& folder,
                               const std::string& name, const std::string& quantity, const std::string& unit,
                               float png_scale) {
@@ -51,13 +70,7 @@ LightmapFiles write_lightmaps(const std::vector<LightmapPage>& pages, const std:
   out.quantity = quantity;
   out.unit = unit;
   out.png_scale = png_scale;
-  for (size_t p = 0; p < pages.size(); ++p) {
-    out.files.emplace_back();
-    for (const PageEncoding& encoding : page_encodings()) {
-      out.files.back().push_back(name + "_lightmap_" + std::to_string(p) + encoding.extension);
-      encoding.write((std::filesystem::path(folder) / out.files.back().back()).string(), pages[p], png_scale);
-    }
-  }
+  out.files = write_pages(pages, folder, name + "_lightmap", EightBitRange{png_scale, 0, true});
   return out;
 }
 

@@ -216,8 +216,8 @@ def test_cancel_ends_radbake_and_leaves_nothing_behind():
     """What Esc does in the modal bake: progress has arrived, then the process ends, its temporary
     folder goes and the scene is as it was."""
     import time
+    scene = cornell_box()  # installs the add-on this case's own scripts folder starts without
     from radbake import runner
-    scene = cornell_box()
     scene.radbake.quality = 'PRODUCTION'
     scene.radbake.max_page_size = 1024
     before = snapshot()

@@ -14,7 +14,7 @@ foreach(scene fzk_haus cylinder_engine teapots milk_truck duck arena)
     COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/corpus/bake_scene.py $<TARGET_FILE:radbake>
             ${CMAKE_CURRENT_SOURCE_DIR}/tools/validate_gltf.mjs ${RADBAKE_CORPUS_DIR} ${scene} ${RADBAKE_CORPUS_BAKES})
   set_tests_properties(corpus.bake.${scene} PROPERTIES FIXTURES_REQUIRED corpus_scenes FIXTURES_SETUP corpus_bakes
-                       LABELS "slow;corpus" TIMEOUT ${timeout_300})
+                       LABELS "slow;corpus" COST 100 TIMEOUT ${timeout_300})
 endforeach()
 add_test(NAME corpus.three
   COMMAND node ${CMAKE_CURRENT_SOURCE_DIR}/corpus/three.test.mjs --corpus ${RADBAKE_CORPUS_DIR}
@@ -23,9 +23,9 @@ set_tests_properties(corpus.three PROPERTIES FIXTURES_REQUIRED "corpus_scenes;co
 add_test(NAME corpus.daylight.fzk_haus
   COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/corpus/daylight_scene.py $<TARGET_FILE:radbake>
           ${RADBAKE_CORPUS_DIR} fzk_haus ${RADBAKE_CORPUS_BAKES} 2)
-set_tests_properties(corpus.daylight.fzk_haus PROPERTIES FIXTURES_REQUIRED corpus_scenes LABELS "slow;corpus" TIMEOUT ${timeout_600})
+set_tests_properties(corpus.daylight.fzk_haus PROPERTIES FIXTURES_REQUIRED corpus_scenes LABELS "slow;corpus" COST 100 TIMEOUT ${timeout_600})
 # The house's rooms surface by surface against its stored path-traced reference.
 add_test(NAME corpus.surfaces.fzk_haus
   COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/corpus/interior_surfaces.py $<TARGET_FILE:radbake>
           ${RADBAKE_CORPUS_DIR} ${RADBAKE_CORPUS_BAKES} ${CMAKE_CURRENT_SOURCE_DIR}/fixtures/fzk_haus_surfaces_reference.csv)
-set_tests_properties(corpus.surfaces.fzk_haus PROPERTIES FIXTURES_REQUIRED corpus_scenes LABELS "slow;corpus" TIMEOUT ${timeout_600})
+set_tests_properties(corpus.surfaces.fzk_haus PROPERTIES FIXTURES_REQUIRED corpus_scenes LABELS "slow;corpus" COST 100 TIMEOUT ${timeout_600})

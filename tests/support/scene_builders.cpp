@@ -2,7 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -187,15 +190,34 @@ std::string bake_file_to_folder(const std::string& input, const std::string& fol
   return folder + "/" + out.gltf_file;
 }
 
+namespace {
+
+// The running test's own folder under the temp directory: ctest runs cases side by side
+// (./dev test), and two cases asking for the same name must not share the files. Named by a hash
+// of the test's name, short: tests read error lines, which clip a path past 100 characters.
+std::filesystem::path scratch_root() {
+  const ::testing::TestInfo* running = ::testing::UnitTest::GetInstance()->current_test_info();
+  const std::string test = running ? std::string(running->test_suite_name()) + "." + running->name()
+                                   : "process " + std::to_string(getpid());
+  uint32_t hash = 2166136261u;  // FNV-1a
+  for (unsigned char c : test) hash = (hash ^ c) * 16777619u;
+  char folder[32];
+  std::snprintf(folder, sizeof folder, "rb_%08x", hash);
+  const std::filesystem::path root = std::filesystem::path(::testing::TempDir()) / folder;
+  std::filesystem::create_directories(root);
+  return root;
+}
+}  // namespace
+
 std::string fresh_folder(const std::string& name) {
-  std::filesystem::path p = std::filesystem::path(::testing::TempDir()) / ("radbake_" + name);
+  const std::filesystem::path p = scratch_root() / name;
   std::filesystem::remove_all(p);
   std::filesystem::create_directories(p);
   return p.string();
 }
 
 std::string write_text_file(const std::string& name, const std::string& text) {
-  std::filesystem::path p = std::filesystem::path(::testing::TempDir()) / name;
+  const std::filesystem::path p = scratch_root() / name;
   std::ofstream(p) << text;
   return p.string();
 }

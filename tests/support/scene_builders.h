@@ -85,10 +85,10 @@ Rgb mean_irradiance(const BakeResult& r, const std::function<bool(Vec3 position,
 std::string bake_file_to_folder(const std::string& input, const std::string& folder, const AtlasOptions& atlas_options,
                                 const BakeOptions& options = {});
 
-// A fresh empty folder under the test temp directory.
+// A fresh empty folder in the running test's own folder under the temp directory.
 std::string fresh_folder(const std::string& name);
 
-// Writes `text` to a file in the test temp directory and returns its path.
+// Writes `text` to a file in the running test's own folder and returns its path.
 std::string write_text_file(const std::string& name, const std::string& text);
 
 }  // namespace radbake::test

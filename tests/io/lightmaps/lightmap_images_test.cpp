@@ -1,12 +1,14 @@
 // Lightmap EXR pages keep the baked values: half float where that is exact enough, full float
 // where half would overflow (daylight illuminance passes 65504 lux). Every page is written in
 // every encoding of page_encodings(), under the names LightmapFiles gives, and each file reads
-// back as the page: the seam a new encoding plugs into.
+// back as the page: the seam a new encoding plugs into. Directional pages go through the same
+// encodings, their 8-bit files packed linearly.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
 
+#include "io/lightmaps/directional_outputs.h"
 #include "io/lightmaps/lightmap_images.h"
 #include "io/lightmaps/page_encodings.h"
 #include "support/images.h"
@@ -66,6 +68,33 @@ TEST(PageEncodings, EveryPageInEveryEncodingUnderItsNameReadsBack) {
       EXPECT_NEAR(png[5 * 3 + size_t(c)], 255 * srgb, 0.5 + 1e-6) << "page " << p << ", channel " << c;
     }
   }
+}
+
+// A dominant-direction page (components in [-1, 1]) in every encoding: the EXR holds the
+// components, the PNG (value + 1) / 2 in 8 linear bits, no sRGB curve.
+TEST(PageEncodings, DirectionalPagesAreWrittenInEveryEncodingTheirPngLinear) {
+  const std::string folder = test::fresh_folder("directional_encodings");
+  const std::vector<std::vector<LightmapPage>> sets = {{page_with({0.5f, -0.5f, 0.0f})}};
+  const DirectionalFiles files = write_directional(Directional::Dominant, sets, folder, "scene");
+  ASSERT_EQ(files.sets.size(), 1u);
+  const DirectionalSet& set = files.sets[0];
+  EXPECT_FLOAT_EQ(set.scale, 2.0f);
+  EXPECT_FLOAT_EQ(set.offset, -1.0f);
+  ASSERT_EQ(set.files.size(), 1u);
+  ASSERT_EQ(set.files[0].size(), page_encodings().size());
+  for (size_t k = 0; k < page_encodings().size(); ++k) {
+    EXPECT_EQ(set.files[0][k], "scene_dominant_direction_0" + page_encodings()[k].extension);
+    EXPECT_TRUE(std::filesystem::is_regular_file(folder + "/" + set.files[0][k])) << set.files[0][k];
+  }
+  const LightmapPage exr = read_lightmap_exr(folder + "/scene_dominant_direction_0.exr");
+  EXPECT_FLOAT_EQ(exr.texels[5].x, 0.5f);
+  EXPECT_FLOAT_EQ(exr.texels[5].y, -0.5f);
+  const std::vector<uint8_t> png = test::read_png_rgb(folder + "/scene_dominant_direction_0.png");
+  ASSERT_EQ(png.size(), 16u * 3);
+  // 255 * (value + 1) / 2 rounded: 191.25, 63.75 and 127.5; an sRGB curve would give 225, 137, 188.
+  EXPECT_EQ(png[5 * 3 + 0], 191);
+  EXPECT_EQ(png[5 * 3 + 1], 64);
+  EXPECT_EQ(png[5 * 3 + 2], 128);
 }
 
 }  // namespace
