@@ -309,6 +309,42 @@ void print_plan(const std::vector<radbake::PlanDecision>& decisions, size_t from
                  decisions[k].reason.c_str());
 }
 
+// The scene read, checked against the bake's budget and given its back faces.
+radbake::LoadedScene load_scene(const radbake::BakeCommand& cmd, radbake::RunInfo& run) {
+  using namespace radbake;
+  const auto t = std::chrono::steady_clock::now();
+  LoadedScene loaded = load_gltf(cmd.input, cmd.load);
+  check_bake_budget(loaded, cmd.atlas, cmd.load, cmd.input);
+  add_back_faces(loaded.scene);
+  run.io_times.push_back({"load", seconds_since(t)});
+  stop_if_interrupted();
+  return loaded;
+}
+
+// The team and the checkpoint the bake shares its stages through. Only the first process checks and
+// writes the checkpoint; the others hand it their results.
+std::unique_ptr<radbake::CheckpointFolder> share_stages(const radbake::BakeCommand& cmd, const radbake::LoadedScene& loaded,
+                                                        radbake::Team& team, radbake::BakeOptions& options) {
+  using namespace radbake;
+  std::unique_ptr<CheckpointFolder> checkpoint;
+  if (!cmd.checkpoint.empty())
+    checkpoint = std::make_unique<CheckpointFolder>(cmd.checkpoint, bake_fingerprint(loaded, cmd.result_options), cmd.input,
+                                                    team.first());
+  options.sharing.team = &team;
+  options.sharing.store = checkpoint.get();
+  if (cmd.merge) options.sharing.merge_slices = slice_count(*checkpoint, cmd.checkpoint);
+  return checkpoint;
+}
+
+// What a bake stopped on purpose (--stop-after, a slice) says it left in the checkpoint.
+void print_stopped(const radbake::StoppedEarly& stopped, const radbake::BakeCommand& cmd) {
+  const char* title = stage_title(stopped.what());
+  std::printf("radbake: stopped after %s; checkpoint %s holds it (%s)\n", title ? title : stopped.what(),
+              cmd.checkpoint.c_str(),
+              title ? "go on with --resume, or bake slices of the gather with --pages or --texel-range K/N"
+                    : "join the slices with radbake merge");
+}
+
 int run_one_bake(const radbake::BakeCommand& cmd, radbake::Team& team, std::optional<OutputSession>& session) {
   using namespace radbake;
   const bool first = team.first();
@@ -317,25 +353,14 @@ int run_one_bake(const radbake::BakeCommand& cmd, radbake::Team& team, std::opti
   run.input = cmd.input;
   run.options = cmd.effective;
 
-  auto t = std::chrono::steady_clock::now();
-  LoadedScene loaded = load_gltf(cmd.input, cmd.load);
-  check_bake_budget(loaded, cmd.atlas, cmd.load, cmd.input);
-  add_back_faces(loaded.scene);
-  run.io_times.push_back({"load", seconds_since(t)});
-  stop_if_interrupted();
+  LoadedScene loaded = load_scene(cmd, run);
   // Planned before anything is written or unwrapped, so a scene with no light fails at once.
   BakeSetup setup = set_up_bake(cmd, loaded.scene, run);
   BakeOptions& options = setup.options;
   const EffectPlan plan = plan_effects(loaded.scene, options.plan);
   const bool quiet = cmd.quiet || !first;
   if (!quiet) print_plan(plan.decisions, 0, "plan: ");
-  // Only the first process checks and writes the checkpoint; the others hand it their results.
-  std::unique_ptr<CheckpointFolder> checkpoint;
-  if (!cmd.checkpoint.empty())
-    checkpoint = std::make_unique<CheckpointFolder>(cmd.checkpoint, bake_fingerprint(loaded, cmd.result_options), cmd.input, first);
-  options.sharing.team = &team;
-  options.sharing.store = checkpoint.get();
-  if (cmd.merge) options.sharing.merge_slices = slice_count(*checkpoint, cmd.checkpoint);
+  const std::unique_ptr<CheckpointFolder> checkpoint = share_stages(cmd, loaded, team, options);
   // A slice, a stopped bake and the processes after the first write no output folder.
   if (first && !cmd.output.empty()) session.emplace(cmd.output, cmd.quiet);
   ProgressDisplay no_folder_display(!quiet && !session);
@@ -345,7 +370,7 @@ int run_one_bake(const radbake::BakeCommand& cmd, radbake::Team& team, std::opti
   };
   ProgressDisplay& display = session ? session->display : no_folder_display;
   const ProgressCallback& progress = session ? session->progress : no_folder_progress;
-  t = std::chrono::steady_clock::now();
+  auto t = std::chrono::steady_clock::now();
   AtlasOptions atlas_options = cmd.atlas;
   atlas_options.progress = progress;
   Atlas atlas = ensure_lightmap_uvs(mesh_views(loaded.scene), atlas_options);
@@ -367,12 +392,7 @@ int run_one_bake(const radbake::BakeCommand& cmd, radbake::Team& team, std::opti
     });
   } catch (const StoppedEarly& stopped) {
     display.finish();
-    if (!first) return 0;
-    const char* title = stage_title(stopped.what());
-    std::printf("radbake: stopped after %s; checkpoint %s holds it (%s)\n", title ? title : stopped.what(),
-                cmd.checkpoint.c_str(),
-                title ? "go on with --resume, or bake slices of the gather with --pages or --texel-range K/N"
-                      : "join the slices with radbake merge");
+    if (first) print_stopped(stopped, cmd);
     return 0;
   }
   display.finish();

@@ -10,6 +10,7 @@
 #include "base/errors.h"
 #include "base/progress.h"
 #include "uv/charts.h"
+#include "uv/half_edge_mesh.h"
 
 namespace radbake {
 

@@ -10,23 +10,10 @@
 
 #include "base/math.h"
 #include "base/progress.h"
+#include "uv/atlas_page.h"
+#include "uv/mesh_view.h"
 
 namespace radbake {
-
-struct MeshView {
-  const Vec3* positions = nullptr;  // world space, metres
-  size_t vertex_count = 0;
-  const uint32_t* triangles = nullptr;  // three indices per triangle
-  size_t triangle_count = 0;
-  const Vec2* lightmap_uvs = nullptr;  // the input's TEXCOORD_1, or null
-  // The input page those UVs were laid out on, when the file names one (a MOZ_lightmap texture, as
-  // radbake and other bakers write): meshes naming the same page are checked together and, when
-  // valid, keep sharing one page of its size. -1: none named; the mesh is checked, and gets a
-  // page, on its own.
-  int uv_page = -1;
-  int uv_page_width = 0, uv_page_height = 0;  // texels
-  std::string name;                    // for messages
-};
 
 enum class InputUvPolicy {
   KeepValid,  // use the input's TEXCOORD_1 where it is valid; generate (and report) where it is not
@@ -57,10 +44,6 @@ struct AtlasOptions {
   // second of work; returning false stops the unwrap, which throws Cancelled (base/errors.h), as
   // a bake's callback stops a bake. A large mesh can take minutes to unwrap.
   ProgressCallback progress = {};
-};
-
-struct AtlasPage {
-  int width = 0, height = 0;  // texels
 };
 
 // One mesh's lightmap parameterisation. Vertices are split along chart seams, so the output has

@@ -9,6 +9,7 @@
 #include <unordered_map>
 
 #include "uv/charts.h"
+#include "uv/half_edge_mesh.h"
 #include "uv/texel_coverage.h"
 
 namespace radbake {

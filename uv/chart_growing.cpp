@@ -6,6 +6,7 @@
 #include <queue>
 
 #include "uv/charts.h"
+#include "uv/half_edge_mesh.h"
 
 namespace radbake {
 namespace {

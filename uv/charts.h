@@ -6,10 +6,12 @@
 #include <vector>
 
 #include "base/math.h"
-#include "uv/atlas.h"
-#include "uv/half_edge_mesh.h"
+#include "base/progress.h"
+#include "uv/atlas_page.h"
 
 namespace radbake {
+
+struct HalfEdgeMesh;  // uv/half_edge_mesh.h
 
 // AtlasOptions::progress for the steps below. Each step (a mesh's charts, a packing attempt)
 // spans part of the whole unwrap; at() reports the fraction of the step done, poll() only asks

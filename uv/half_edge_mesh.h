@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "uv/atlas.h"
+#include "uv/mesh_view.h"
 
 namespace radbake {
 

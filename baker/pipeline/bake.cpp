@@ -336,9 +336,10 @@ void interreflect(const BakeGeometry& geometry, const BakeOptions& options, cons
   if (plan.one_channel) solve.one_channel_colour = plan.light_colour;
   auto started = std::chrono::steady_clock::now();
   Team& team = *options.sharing.team;
-  Interreflection light_between = solve_interreflection(elements, surface, tracer, result.direct, options.patches,
-                                                        options.form_factors, options.subdivision, solve, options.seed,
-                                                        progress, observer, options.sharing);
+  const InterreflectionOptions interreflection{options.patches, options.form_factors, options.subdivision, solve,
+                                               options.seed};
+  Interreflection light_between =
+      solve_interreflection(elements, surface, tracer, result.direct, interreflection, progress, observer, options.sharing);
   if (options.sharing.stop_after == StopAfter::Radiosity) throw StoppedEarly("radiosity");
   const double interreflection_seconds = seconds_since(started);
   report.stage_times.push_back({"patches", interreflection_seconds - light_between.form_factor_seconds -

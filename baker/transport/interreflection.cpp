@@ -238,17 +238,17 @@ std::vector<uint8_t> patches_to_split(const Elements& e, const Surface& surface,
 }
 
 Interreflection solve_interreflection(const Elements& elements, const Surface& surface, const RayTracer& tracer,
-                                      const std::vector<Rgb>& direct, const PatchOptions& patch_options,
-                                      const FormFactorOptions& form_factors, const SubdivisionOptions& subdivision,
-                                      const SolveOptions& solve, uint64_t seed, Progress& progress,
-                                      const InterreflectionObserver& observer, const Sharing& sharing) {
+                                      const std::vector<Rgb>& direct, const InterreflectionOptions& options,
+                                      Progress& progress, const InterreflectionObserver& observer, const Sharing& sharing) {
+  const uint64_t seed = options.seed;
+  const SubdivisionOptions& subdivision = options.subdivision;
   SoloTeam alone;
   Team& team = sharing.team ? *sharing.team : alone;
   Interreflection out;
   SolveObserver solve_observer{observer.every, [&](const std::vector<Rgb>& exitance, size_t iteration) {
                                  observer.see(out.patches, out.transport, exitance, iteration);
                                }};
-  PatchOptions patching = patch_options;
+  PatchOptions patching = options.patches;
   if (patching.block_size <= 0 && patching.mean_free_path_m <= 0) {
     const double free_path = mean_free_path(elements, surface, tracer, seed);
     if (std::isfinite(free_path)) patching.mean_free_path_m = free_path;
@@ -266,7 +266,7 @@ Interreflection solve_interreflection(const Elements& elements, const Surface& s
   for (int round = 0;; ++round) {
     const std::string suffix = round == 0 ? "" : ", round " + std::to_string(round + 1);
     auto start = std::chrono::steady_clock::now();
-    measure_shared(elements, out.patches, surface, tracer, form_factors, power, which, seed, "form factors" + suffix,
+    measure_shared(elements, out.patches, surface, tracer, options.form_factors, power, which, seed, "form factors" + suffix,
                    team, sharing, progress, rows);
     if (round == 0 && sharing.stop_after == StopAfter::FormFactors) throw StoppedEarly("form factors");
     // Only another round reads the measured rows again: the last hands them over to be freed.
@@ -280,7 +280,7 @@ Interreflection solve_interreflection(const Elements& elements, const Surface& s
     std::vector<uint8_t> split;
     if (team.first()) {
       SolveSaving saving{sharing.store, "radiosity" + suffix, sharing.resume, sharing.solve_save_seconds};
-      out.solution = solve_radiosity(out.patches, out.transport, patch_direct, solve, progress, solve_observer, saving);
+      out.solution = solve_radiosity(out.patches, out.transport, patch_direct, options.solve, progress, solve_observer, saving);
       if (!last_round) split = patches_to_split(elements, surface, out.patches, out.solution.exitance, subdivision.tolerance);
     }
     share_solution(team, out.solution, split);

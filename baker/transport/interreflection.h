@@ -31,6 +31,16 @@ struct SubdivisionOptions {
   int max_rounds = 4;  // solve-and-split rounds after the first solve; each halves the split patches' side
 };
 
+// How light between surfaces is found: the patches, their form factors, adaptive subdivision, the
+// solve, and the seed of the rays that measure them.
+struct InterreflectionOptions {
+  PatchOptions patches;
+  FormFactorOptions form_factors;
+  SubdivisionOptions subdivision;
+  SolveOptions solve;
+  uint64_t seed = 1;
+};
+
 struct SubdivisionRound {
   size_t patches = 0;  // patches in this round's solve
   size_t split = 0;    // of them, split after it
@@ -56,10 +66,9 @@ struct InterreflectionObserver {
 // rows of form factors are measured by all and solved on the first process: the others get the
 // patches and the solved exitance, but no transport.
 Interreflection solve_interreflection(const Elements& elements, const Surface& surface, const RayTracer& tracer,
-                                      const std::vector<Rgb>& direct, const PatchOptions& patch_options,
-                                      const FormFactorOptions& form_factors, const SubdivisionOptions& subdivision,
-                                      const SolveOptions& solve, uint64_t seed, Progress& progress,
-                                      const InterreflectionObserver& observer = {}, const Sharing& sharing = {});
+                                      const std::vector<Rgb>& direct, const InterreflectionOptions& options,
+                                      Progress& progress, const InterreflectionObserver& observer = {},
+                                      const Sharing& sharing = {});
 
 // Irradiance per patch from the other patches' reflected `exitance`: what each gathers, sum over
 // q of B_q A_q F_qp / A_p (= F_pq B_q by reciprocity between single-sided patches), lux.

@@ -175,50 +175,72 @@ void write_sensors(const BakeResult& result, const std::vector<double>& error, d
   }
 }
 
-// The work plane's summaries per storey, room and in all, its maps and work_plane_rooms.csv.
-void write_work_plane(const BakeResult& result, const std::vector<double>& error, double to_percent,
-                      const FalseColourScale& map_scale, const std::string& folder, AnalysisFiles& out) {
-  const std::vector<double>& lux = result.sensor_lux;
-  const WorkPlane& plane = result.work_plane;
-  out.outdoor_points = plane.outdoor_points;
-  out.sliver_points = plane.sliver_points;
-  std::vector<double> percent(lux), percent_error(error);
-  for (double& v : percent) v *= to_percent;
-  for (double& v : percent_error) v *= to_percent;
-  auto readings_of = [&](const std::vector<int32_t>& sensors, const std::vector<double>& values, const std::vector<double>& errors) {
+// The work plane's readings: lux and their standard errors, and the same in percent of the
+// outdoor illuminance when there is a daylight factor; summarised over any set of its sensors.
+struct PlaneReadings {
+  std::vector<double> lux, error, percent, percent_error;  // percent: empty without a daylight factor
+
+  PlaneReadings(const std::vector<double>& lux_, const std::vector<double>& error_, double to_percent)
+      : lux(lux_), error(error_) {
+    if (to_percent <= 0) return;
+    percent = lux, percent_error = error;
+    for (double& v : percent) v *= to_percent;
+    for (double& v : percent_error) v *= to_percent;
+  }
+  bool in_percent() const { return !percent.empty(); }
+  ReadingSummary lux_at(const std::vector<int32_t>& sensors) const { return at(sensors, lux, error); }
+  ReadingSummary percent_at(const std::vector<int32_t>& sensors) const { return at(sensors, percent, percent_error); }
+
+ private:
+  static ReadingSummary at(const std::vector<int32_t>& sensors, const std::vector<double>& values,
+                           const std::vector<double>& errors) {
     std::vector<double> readings, reading_errors;
     for (int32_t k : sensors)
       if (k >= 0) readings.push_back(values[size_t(k)]), reading_errors.push_back(errors[size_t(k)]);
     return summarise(readings, reading_errors);
-  };
+  }
+};
+
+// Each storey's summaries and the work plane's in all.
+void summarise_storeys(const WorkPlane& plane, const PlaneReadings& readings, AnalysisFiles& out) {
   std::vector<int32_t> all;
   for (const WorkPlaneStorey& storey : plane.storeys) {
-    StoreyReadings readings;
-    readings.floor_height = storey.floor_height;
-    readings.lux = readings_of(storey.sensor_at, lux, error);
-    if (to_percent > 0) readings.daylight_factor = readings_of(storey.sensor_at, percent, percent_error);
-    out.storeys.push_back(readings);
+    StoreyReadings summary;
+    summary.floor_height = storey.floor_height;
+    summary.lux = readings.lux_at(storey.sensor_at);
+    if (readings.in_percent()) summary.daylight_factor = readings.percent_at(storey.sensor_at);
+    out.storeys.push_back(summary);
     all.insert(all.end(), storey.sensor_at.begin(), storey.sensor_at.end());
   }
-  out.work_plane = readings_of(all, lux, error);
+  out.work_plane = readings.lux_at(all);
+  if (readings.in_percent()) out.work_plane_daylight_factor = readings.percent_at(all);
+}
+
+// Each storey's false-colour maps, in lux and in percent.
+void write_storey_maps(const WorkPlane& plane, const PlaneReadings& readings, const FalseColourScale& map_scale,
+                       const std::string& folder, AnalysisFiles& out) {
   FalseColourScale scale = map_scale;
   scale.unit = "lx";
-  const std::vector<std::string> maps = write_work_plane_maps(folder, "work_plane", plane, lux, scale);
+  const std::vector<std::string> maps = write_work_plane_maps(folder, "work_plane", plane, readings.lux, scale);
   std::vector<std::string> percent_maps;
-  if (to_percent > 0) {
-    out.work_plane_daylight_factor = readings_of(all, percent, percent_error);
+  if (readings.in_percent()) {
     scale.unit = "%";
     scale.max = 0;  // the lux scale's max means nothing in percent
-    percent_maps = write_work_plane_maps(folder, "work_plane_daylight_factor", plane, percent, scale);
+    percent_maps = write_work_plane_maps(folder, "work_plane_daylight_factor", plane, readings.percent, scale);
   }
   for (size_t s = 0; s < out.storeys.size(); ++s) {
     out.storeys[s].maps.push_back(maps[s]);
     if (!percent_maps.empty()) out.storeys[s].maps.push_back(percent_maps[s]);
     out.files.insert(out.files.end(), out.storeys[s].maps.begin(), out.storeys[s].maps.end());
   }
+}
+
+// work_plane_rooms.csv: each room's area, centre and readings.
+void write_rooms(const BakeResult& result, const PlaneReadings& readings, const std::string& folder, AnalysisFiles& out) {
+  const WorkPlane& plane = result.work_plane;
   std::ofstream csv(folder + "/work_plane_rooms.csv");
   csv << "storey,room,points,area_m2,centre_x,centre_z,min_lx,mean_lx,max_lx,uniformity"
-      << (to_percent > 0 ? ",daylight_factor_min_percent,daylight_factor_mean_percent,daylight_factor_max_percent" : "")
+      << (readings.in_percent() ? ",daylight_factor_min_percent,daylight_factor_mean_percent,daylight_factor_max_percent" : "")
       << "\n";
   for (const WorkPlaneRoom& room : plane.rooms) {
     RoomReadings r;
@@ -227,13 +249,13 @@ void write_work_plane(const BakeResult& result, const std::vector<double>& error
     for (int32_t k : room.sensors)
       r.centre_x += result.sensors[size_t(k)].position.x, r.centre_z += result.sensors[size_t(k)].position.z;
     r.centre_x /= double(room.sensors.size()), r.centre_z /= double(room.sensors.size());
-    r.lux = readings_of(room.sensors, lux, error);
-    if (to_percent > 0) r.daylight_factor = readings_of(room.sensors, percent, percent_error);
+    r.lux = readings.lux_at(room.sensors);
+    if (readings.in_percent()) r.daylight_factor = readings.percent_at(room.sensors);
     char row[320];
     std::snprintf(row, sizeof row, "%d,%d,%zu,%.3f,%.3f,%.3f,%.6g,%.6g,%.6g,%.4f", r.storey + 1, r.number, r.lux.count,
                   r.area, r.centre_x, r.centre_z, r.lux.min, r.lux.mean, r.lux.max, r.lux.uniformity);
     csv << row;
-    if (to_percent > 0) {
+    if (readings.in_percent()) {
       std::snprintf(row, sizeof row, ",%.4g,%.4g,%.4g", r.daylight_factor.min, r.daylight_factor.mean, r.daylight_factor.max);
       csv << row;
     }
@@ -242,6 +264,17 @@ void write_work_plane(const BakeResult& result, const std::vector<double>& error
   }
   close_written(csv, folder + "/work_plane_rooms.csv");
   out.files.push_back("work_plane_rooms.csv");
+}
+
+// The work plane's summaries per storey, room and in all, its maps and work_plane_rooms.csv.
+void write_work_plane(const BakeResult& result, const std::vector<double>& error, double to_percent,
+                      const FalseColourScale& map_scale, const std::string& folder, AnalysisFiles& out) {
+  out.outdoor_points = result.work_plane.outdoor_points;
+  out.sliver_points = result.work_plane.sliver_points;
+  const PlaneReadings readings(result.sensor_lux, error, to_percent);
+  summarise_storeys(result.work_plane, readings, out);
+  write_storey_maps(result.work_plane, readings, map_scale, folder, out);
+  write_rooms(result, readings, folder, out);
 }
 
 // Each eye's fisheye and perspective luminance, as EXR and false colour.

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "io/gltf/gltf_loader.h"
+#include "io/gltf/load_limits.h"
 
 namespace radbake {
 

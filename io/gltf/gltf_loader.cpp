@@ -1,3 +1,5 @@
+#include "io/gltf/gltf_loader.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "io/gltf/gltf_check.h"
-#include "io/gltf/gltf_loader.h"
+#include "io/gltf/load_limits.h"
 
 namespace radbake {
 

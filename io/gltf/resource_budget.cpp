@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "base/errors.h"
+#include "io/gltf/gltf_loader.h"
 #include "io/gltf/gltf_source.h"
 
 namespace radbake {

@@ -217,10 +217,6 @@ void check_exr_header(RegularFile& file, const std::string& path) {
   throw not_exr("its header has no dataWindow");
 }
 
-}  // namespace
-
-namespace {
-
 // OpenEXR reads the page through the descriptor radbake opened and checked.
 class ExrFileInput : public Imf::IStream {
  public:
@@ -238,6 +234,29 @@ class ExrFileInput : public Imf::IStream {
   uint64_t at_ = 0;
 };
 
+constexpr const char* kRgb[3] = {"R", "G", "B"};
+
+void require_rgb(const Imf::ChannelList& channels, const std::string& path) {
+  for (const char* c : kRgb)
+    if (!channels.findChannel(c)) {
+      size_t count = 0;
+      for (auto it = channels.begin(); it != channels.end(); ++it) ++count;
+      throw InputError(clipped(path) + " has no " + c + " channel (" + std::to_string(count) +
+                       " channel(s)); a lightmap page is RGB");
+    }
+}
+
+// Where OpenEXR puts the R, G and B of `window` as floats: the page's texels. It addresses the
+// buffer by pixel coordinates, which start at the window's corner.
+Imf::FrameBuffer texels_of(LightmapPage& page, const Imath::Box2i& window) {
+  char* origin = reinterpret_cast<char*>(page.texels.data()) -
+                 (ptrdiff_t(window.min.x) + ptrdiff_t(window.min.y) * page.width) * ptrdiff_t(sizeof(Rgb));
+  Imf::FrameBuffer texels;
+  for (size_t c = 0; c < 3; ++c)
+    texels.insert(kRgb[c], Imf::Slice(Imf::FLOAT, origin + c * sizeof(float), sizeof(Rgb), sizeof(Rgb) * size_t(page.width)));
+  return texels;
+}
+
 }  // namespace
 
 LightmapPage read_lightmap_exr(const std::string& path) {
@@ -253,23 +272,9 @@ LightmapPage read_lightmap_exr(const std::string& path) {
     const Imath::Box2i window = in.header().dataWindow();
     page.width = window.max.x - window.min.x + 1;
     page.height = window.max.y - window.min.y + 1;
-    const Imf::ChannelList& channels = in.header().channels();
-    for (const char* c : {"R", "G", "B"})
-      if (!channels.findChannel(c)) {
-        size_t count = 0;
-        for (auto it = channels.begin(); it != channels.end(); ++it) ++count;
-        throw InputError(clipped(path) + " has no " + c + " channel (" + std::to_string(count) +
-                         " channel(s)); a lightmap page is RGB");
-      }
+    require_rgb(in.header().channels(), path);
     page.texels.resize(size_t(page.width) * size_t(page.height));
-    // OpenEXR addresses the buffer by pixel coordinates, which start at the window's corner.
-    char* origin = reinterpret_cast<char*>(page.texels.data()) -
-                   (ptrdiff_t(window.min.x) + ptrdiff_t(window.min.y) * page.width) * ptrdiff_t(sizeof(Rgb));
-    Imf::FrameBuffer texels;
-    const char* names[3] = {"R", "G", "B"};
-    for (size_t c = 0; c < 3; ++c)
-      texels.insert(names[c], Imf::Slice(Imf::FLOAT, origin + c * sizeof(float), sizeof(Rgb), sizeof(Rgb) * size_t(page.width)));
-    in.setFrameBuffer(texels);
+    in.setFrameBuffer(texels_of(page, window));
     in.readPixels(window.min.y, window.max.y);
   } catch (const InputError&) {
     throw;

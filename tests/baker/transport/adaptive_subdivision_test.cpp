@@ -62,7 +62,7 @@ Interreflection solve(const Prepared& p, int block, double subdivide) {
   SubdivisionOptions subdivision;
   subdivision.tolerance = subdivide;
   Progress progress;
-  return solve_interreflection(p.elements, p.surface, *p.tracer, p.direct, patches, {}, subdivision, {}, 3, progress);
+  return solve_interreflection(p.elements, p.surface, *p.tracer, p.direct, {patches, {}, subdivision, {}, 3}, progress);
 }
 
 // Area-weighted RMS difference of the piecewise-constant radiosity (each element valued by its
