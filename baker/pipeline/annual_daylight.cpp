@@ -458,8 +458,8 @@ AnnualDaylight annual_daylight(const Scene& scene, const Atlas& atlas, const Bak
     for (size_t b = 0; b < year.bins; ++b) sum += response[i * year.bins + b];
     uniform[i] = Rgb{sum, sum, sum};
   }
-  const InterreflectionOptions interreflection{options.patches, options.form_factors, SubdivisionOptions{}, options.solve,
-                                               options.seed};
+  InterreflectionOptions interreflection = interreflection_options(options);
+  interreflection.subdivision = {};  // the coefficients' patches stay as first made: one set for every column
   const Interreflection light_between = solve_interreflection(e, surface, tracer, uniform, interreflection, progress);
   const YearSuns suns = year_suns(hours, year.sun_bins);
   const SensorRays rays = sensor_rays(year, sensors, portals, options);

@@ -332,12 +332,10 @@ void interreflect(const BakeGeometry& geometry, const BakeOptions& options, cons
       on_preview(compose_pages(elements, estimate, surface.pages), iteration);
     };
   }
-  SolveOptions solve = options.solve;
-  if (plan.one_channel) solve.one_channel_colour = plan.light_colour;
+  InterreflectionOptions interreflection = interreflection_options(options);
+  if (plan.one_channel) interreflection.solve.one_channel_colour = plan.light_colour;
   auto started = std::chrono::steady_clock::now();
   Team& team = *options.sharing.team;
-  const InterreflectionOptions interreflection{options.patches, options.form_factors, options.subdivision, solve,
-                                               options.seed};
   Interreflection light_between =
       solve_interreflection(elements, surface, tracer, result.direct, interreflection, progress, observer, options.sharing);
   if (options.sharing.stop_after == StopAfter::Radiosity) throw StoppedEarly("radiosity");
@@ -382,7 +380,7 @@ void interreflect(const BakeGeometry& geometry, const BakeOptions& options, cons
   report.ambient = solution.ambient;
   report.gather_rays = gather_stats.fates;
   report.form_factor_rays = light_between.transport.fates;
-  report.plan.push_back(solve_outcome(solution, solve));
+  report.plan.push_back(solve_outcome(solution, interreflection.solve));
   if (!solution.converged)
     report.warnings.push_back("the radiosity solve stopped at its iteration guard before reaching the tolerance");
   result.patch_of_element = std::move(light_between.patches.patch_of_element);

@@ -39,4 +39,8 @@ void validate(const BakeOptions& options, const DaylightOptions& daylight, const
     throw InputError("--daylight-factor needs --store irradiance: it is the ratio of illuminances");
 }
 
+InterreflectionOptions interreflection_options(const BakeOptions& options) {
+  return {options.patches, options.form_factors, options.subdivision, options.solve, options.seed};
+}
+
 }  // namespace radbake

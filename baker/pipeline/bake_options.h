@@ -82,4 +82,7 @@ struct BakeRun {
 // is what becomes options.sky (daylight_sky); bake() checks its own options with the defaults.
 void validate(const BakeOptions& options, const DaylightOptions& daylight = {}, const BakeRun& run = {});
 
+// The options of the light between surfaces (baker/transport/interreflection.h), as these set them.
+InterreflectionOptions interreflection_options(const BakeOptions& options);
+
 }  // namespace radbake

@@ -207,6 +207,7 @@ std::filesystem::path scratch_root() {
   std::filesystem::create_directories(root);
   return root;
 }
+
 }  // namespace
 
 std::string fresh_folder(const std::string& name) {
