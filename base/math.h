@@ -90,8 +90,9 @@ struct Mat4 {
     return {float(m[0] * d.x + m[4] * d.y + m[8] * d.z), float(m[1] * d.x + m[5] * d.y + m[9] * d.z),
             float(m[2] * d.x + m[6] * d.y + m[10] * d.z)};
   }
-  // Normals transform by the inverse transpose of the upper 3x3: the cofactor matrix does that
-  // up to a positive scale (the determinant's sign is applied so mirrored nodes keep orientation).
+  // Normals transform by the inverse transpose of the upper 3x3, which is its cofactor matrix over
+  // the determinant: the cofactors times the determinant's sign give it up to a positive scale (a
+  // mirrored node's normals keep pointing out of its surface). Cofactor cRC is of row R, column C.
   Vec3 transform_normal(Vec3 n) const {
     double a = m[0], b = m[4], c = m[8], d = m[1], e = m[5], f = m[9], g = m[2], h = m[6], i = m[10];
     double det = a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g);
@@ -99,9 +100,9 @@ struct Mat4 {
     double c00 = e * i - f * h, c01 = -(d * i - f * g), c02 = d * h - e * g;
     double c10 = -(b * i - c * h), c11 = a * i - c * g, c12 = -(a * h - b * g);
     double c20 = b * f - c * e, c21 = -(a * f - c * d), c22 = a * e - b * d;
-    return {float(s * (c00 * n.x + c10 * n.y + c20 * n.z)),
-            float(s * (c01 * n.x + c11 * n.y + c21 * n.z)),
-            float(s * (c02 * n.x + c12 * n.y + c22 * n.z))};
+    return {float(s * (c00 * n.x + c01 * n.y + c02 * n.z)),
+            float(s * (c10 * n.x + c11 * n.y + c12 * n.z)),
+            float(s * (c20 * n.x + c21 * n.y + c22 * n.z))};
   }
   double determinant3() const {
     double a = m[0], b = m[4], c = m[8], d = m[1], e = m[5], f = m[9], g = m[2], h = m[6], i = m[10];

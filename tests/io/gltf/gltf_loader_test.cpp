@@ -75,6 +75,37 @@ TEST(GltfLoader, NestedTransformsComposeParentMatrixAndChildTrs) {
   EXPECT_NEAR(s.lights[0].direction.y, -1.0f, 1e-6f);  // the node turns -Z to point down
 }
 
+// A slanted triangle whose NORMAL is its face normal, under nodes that turn, stretch and mirror
+// it: in world space each vertex normal must still be the face normal (normals go by the
+// matrix's inverse transpose). The turn is what found the fault: normals went by the inverse, so
+// the corpus's teapots, turned from Z-up to Y-up by their root node, had their shading normals
+// pointing into the pot, and the path tracer lit their hits from behind (teapots RMSE 11% -> 1.3%).
+TEST(GltfLoader, VertexNormalsTurnStretchAndMirrorWithTheirFaces) {
+  // Corners (0,0,0) (1,0,-1) (0,1,0): face normal (1,0,1)/sqrt(2), counter-clockwise seen from it.
+  const float r = 0.70710678f;
+  const float data[] = {0, 0, 0, 1, 0, -1, 0, 1, 0, r, 0, r, r, 0, r, r, 0, r};
+  const std::string buffer = to_base64(std::string(reinterpret_cast<const char*>(data), sizeof data));
+  const std::string gltf = R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0, 1, 2, 3]}],
+  "nodes": [{"name": "turned", "mesh": 0, "rotation": [0.5, 0.1, -0.3, 0.8062258]},
+            {"name": "z_up_to_y_up", "mesh": 0, "matrix": [0.0254, 0, 0, 0, 0, 0, -0.0254, 0, 0, 0.0254, 0, 0, 0, 0, 0, 1]},
+            {"name": "stretched", "mesh": 0, "rotation": [0, 0.3826834, 0, 0.9238795], "scale": [3, 0.5, 1]},
+            {"name": "mirrored", "mesh": 0, "scale": [-1, 2, 1], "rotation": [0.2, 0, 0, 0.9797959]}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1}}]}],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [0, 0, -1], "max": [1, 1, 0]},
+                {"bufferView": 0, "byteOffset": 36, "componentType": 5126, "count": 3, "type": "VEC3"}],
+  "bufferViews": [{"buffer": 0, "byteLength": 72}],
+  "buffers": [{"byteLength": 72, "uri": "data:application/octet-stream;base64,)" + buffer + R"("}]})";
+  const Scene s = load_gltf(test::write_text_file("turned_normals.gltf", gltf)).scene;
+  ASSERT_EQ(s.instances.size(), 4u);
+  for (const MeshInstance& inst : s.instances) {
+    Vec3 face;
+    instance_area(inst, &face);  // the world face normal, on the front side (mirroring flips the winding)
+    ASSERT_EQ(inst.normals.size(), 3u) << inst.name;
+    // 1e-5: float rounding of a unit vector through one 3x3 product.
+    for (Vec3 n : inst.normals) EXPECT_NEAR(dot(normalize(n), face), 1.0f, 1e-5f) << inst.name;
+  }
+}
+
 TEST(GltfLoader, BinaryAndExternalBufferFilesLoadTheSameScene) {
   Scene glb = load_gltf(fixture("lit_room.glb")).scene;
   Scene ext = load_gltf(fixture("external_buffer.gltf")).scene;
