@@ -114,7 +114,6 @@ Elements build_elements(const Surface& surface, const MaterialSampler& materials
       Vec2 bary = lightmap_bary(surface, t, whole_plane ? centre : largest->centroid);
       e.position[i] = surface.point(t, bary);
       e.normal[i] = surface.shading_normal(t, bary);
-      if (dot(e.normal[i], surface.normal[t]) <= 0) e.normal[i] = surface.normal[t];
       e.area[i] = float(area);
       e.triangle[i] = t;
       e.page[i] = largest->page;

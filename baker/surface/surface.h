@@ -37,9 +37,12 @@ struct Surface {
   Vec3 point(uint32_t t, Vec2 bary) const {  // bary = (b1, b2), weights of corners 1 and 2
     return corners[3 * t] * (1 - bary.x - bary.y) + corners[3 * t + 1] * bary.x + corners[3 * t + 2] * bary.y;
   }
+  // The corners' normals interpolated, or the face's where they point behind it: a surface is lit
+  // and seen from its winding's side, whatever a file's normals say, by every stage alike.
   Vec3 shading_normal(uint32_t t, Vec2 bary) const {
-    return normalize(corner_normals[3 * t] * (1 - bary.x - bary.y) + corner_normals[3 * t + 1] * bary.x +
-                     corner_normals[3 * t + 2] * bary.y);
+    const Vec3 n = normalize(corner_normals[3 * t] * (1 - bary.x - bary.y) + corner_normals[3 * t + 1] * bary.x +
+                             corner_normals[3 * t + 2] * bary.y);
+    return dot(n, normal[t]) > 0 ? n : normal[t];
   }
   // Metres per texel side on triangle t: its area over its area on the page, square-rooted.
   float texel_size(uint32_t t) const {
