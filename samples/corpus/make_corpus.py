@@ -4,10 +4,12 @@
 usage: make_corpus.py OUTPUT_FOLDER
 
 Every scene comes from a Debian package that ./dev installs (assimp-testmodels, converted to glTF
-2.0 by assimp-utils' `assimp export`). Where a model has no light, one is added, always the
-same way (add_light below), and said so in OUTPUT_FOLDER/corpus.json, which the tests and
-./dev bench-real read. Nothing of the models is kept in this repository: the script rebuilds the
-corpus from the packages. samples/corpus/README.md says where each came from and its licence.
+2.0 by assimp-utils' `assimp export`), but zdm2, which no package holds: it is copied from the
+shared corpus beside the project (../shared/corpus, found as SHARED_CORPUS says). Where a model
+has no light, one is added, always the same way (add_light below), and said so in
+OUTPUT_FOLDER/corpus.json, which the tests and ./dev bench-real read. Nothing of the models is
+kept in this repository: the script rebuilds the corpus from the packages and the shared corpus.
+samples/corpus/README.md says where each came from and its licence.
 """
 import json
 import math
@@ -17,9 +19,11 @@ import struct
 import subprocess
 import sys
 
+import floor_lamps
 import quake3_map
 
 MODELS = "/usr/share/assimp/models"
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
 # name: (what it stands for, source file, the light added)
 SCENES = {
@@ -31,7 +35,16 @@ SCENES = {
     "duck": ("a textured game asset: the COLLADA duck", "Collada/duck.dae", "lamp"),
     "arena": ("a game level: OpenArena's am_underworks2, an underground industrial arena, Quake 3 BSP",
               "openarena:am_underworks2", "player_lamps"),
+    "zdm2": ("a game level that is a benchmark elsewhere: Cube 2: Sauerbraten's zdm2, indoor and outdoor, the map of "
+             "Godot's global-illumination demo", "shared:zdm2/zdm2.gltf", "floor_lamps"),
 }
+# Scenes of the shared corpus, with the metres in one of their units: Cube 2's is about 0.125 m (a
+# player stands about 15 units tall), as ../shared/corpus/README.md says.
+SHARED_UNIT_M = {"zdm2": 0.125}
+# A level with no player starts gets as many lamps as the arena has (its floors are as large:
+# 9,300 m2 against the arena's 10,600), at floor_lamps' points, standing where a start would.
+FLOOR_LAMPS = 15
+PLAYER_START_HEIGHT = 0.75  # metres over the floor, Quake 3's
 # OpenArena's archives (Debian's openarena-088-data, openarena-081-textures), later ones winning.
 OPENARENA = "/usr/share/games/openarena/baseoa"
 OPENARENA_PK3S = ["pak4-textures.pk3", "pak6-patch088.pk3"]
@@ -51,7 +64,7 @@ SUN_ELEVATION, SUN_AZIMUTH = math.radians(35), math.radians(225)  # azimuth from
 LAMP_LUX_AT_CENTRE = 300.0
 # A game level keeps no light of its own (q3map2 bakes its lights and drops them): a lamp of
 # PLAYER_LAMP_CD at head height, PLAYER_LAMP_HEIGHT above each player start (which stands
-# 0.75 m above the floor), lights the places the level is played in.
+# PLAYER_START_HEIGHT above the floor), lights the places the level is played in.
 PLAYER_LAMP_CD, PLAYER_LAMP_HEIGHT = 200.0, 1.0
 
 
@@ -102,10 +115,10 @@ def node_matrix(node):
             r[6] * sz, r[7] * sz, r[8] * sz, 0, tx, ty, tz, 1]
 
 
-def world_bounds(doc, named=""):
-    """World-space box of the default scene, from each mesh's POSITION min/max corners; with
-    `named`, of the nodes whose name holds it (and their children) only."""
-    lo, hi = [math.inf] * 3, [-math.inf] * 3
+def placed_primitives(doc, named=""):
+    """(world matrix, primitive) of every primitive of the default scene; with `named`, of the nodes
+    whose name holds it (and their children) only."""
+    placed = []
     scene = doc.get("scenes", [{}])[doc.get("scene", 0)]
 
     def walk(index, parent, counted):
@@ -113,19 +126,56 @@ def world_bounds(doc, named=""):
         m = mat_mul(parent, node_matrix(node))
         counted = counted or named in node.get("name", "")
         if "mesh" in node and counted:
-            for p in doc["meshes"][node["mesh"]]["primitives"]:
-                a = doc["accessors"][p["attributes"]["POSITION"]]
-                for corner in range(8):
-                    v = [a["max"][i] if corner >> i & 1 else a["min"][i] for i in range(3)]
-                    w = [m[r] * v[0] + m[4 + r] * v[1] + m[8 + r] * v[2] + m[12 + r] for r in range(3)]
-                    for i in range(3):
-                        lo[i], hi[i] = min(lo[i], w[i]), max(hi[i], w[i])
+            placed.extend((m, p) for p in doc["meshes"][node["mesh"]]["primitives"])
         for child in node.get("children", []):
             walk(child, m, counted)
 
     for root in scene.get("nodes", []):
         walk(root, [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1], not named)
+    return placed
+
+
+def transformed(m, v):
+    return [m[r] * v[0] + m[4 + r] * v[1] + m[8 + r] * v[2] + m[12 + r] for r in range(3)]
+
+
+def world_bounds(doc, named=""):
+    """World-space box of the default scene (or of the nodes `named`, as placed_primitives), from
+    each mesh's POSITION min/max corners."""
+    lo, hi = [math.inf] * 3, [-math.inf] * 3
+    for m, p in placed_primitives(doc, named):
+        a = doc["accessors"][p["attributes"]["POSITION"]]
+        for corner in range(8):
+            w = transformed(m, [a["max"][i] if corner >> i & 1 else a["min"][i] for i in range(3)])
+            for i in range(3):
+                lo[i], hi[i] = min(lo[i], w[i]), max(hi[i], w[i])
     return lo, hi
+
+
+def accessor_values(doc, binary, index):
+    """A float or unsigned accessor's components, flat, read from the file's one buffer."""
+    a = doc["accessors"][index]
+    view = doc["bufferViews"][a["bufferView"]]
+    width = {"SCALAR": 1, "VEC2": 2, "VEC3": 3, "VEC4": 4}[a["type"]]
+    code = {5126: "f", 5125: "I", 5123: "H", 5121: "B"}[a["componentType"]]
+    size = struct.calcsize(code)
+    start = view.get("byteOffset", 0) + a.get("byteOffset", 0)
+    stride = view.get("byteStride", width * size)
+    return [x for k in range(a["count"]) for x in struct.unpack_from("<" + code * width, binary, start + k * stride)]
+
+
+def world_triangles(doc, binary):
+    """Every triangle of the default scene as three world-space corners."""
+    triangles = []
+    for m, p in placed_primitives(doc):
+        if p.get("mode", 4) != 4:
+            continue
+        xyz = accessor_values(doc, binary, p["attributes"]["POSITION"])
+        points = [transformed(m, xyz[k:k + 3]) for k in range(0, len(xyz), 3)]
+        corners = accessor_values(doc, binary, p["indices"]) if "indices" in p else range(len(points))
+        triangles.extend((points[corners[k]], points[corners[k + 1]], points[corners[k + 2]])
+                         for k in range(0, len(corners) - 2, 3))
+    return triangles
 
 
 def look_rotation(direction):
@@ -150,14 +200,53 @@ def add_punctual(doc, light, node):
         used.append("KHR_lights_punctual")
 
 
-def add_player_lamps(doc, starts):
+def add_player_lamps(doc, starts, where="each player start"):
     """A point lamp over each player start (PLAYER_LAMP_*); returns its description and the bounds."""
     for k, (x, y, z) in enumerate(starts):
         add_punctual(doc, {"name": f"added lamp {k}", "type": "point", "intensity": PLAYER_LAMP_CD},
                      {"name": f"added lamp {k}", "translation": [x, y + PLAYER_LAMP_HEIGHT, z]})
     lo, hi = world_bounds(doc)
-    return (f"{len(starts)} point lamps of {PLAYER_LAMP_CD:g} cd, {PLAYER_LAMP_HEIGHT:g} m above each player start",
-            {"min": lo, "max": hi})
+    return f"{len(starts)} point lamps of {PLAYER_LAMP_CD:g} cd, {PLAYER_LAMP_HEIGHT:g} m above {where}", {"min": lo, "max": hi}
+
+
+def add_floor_lamps(doc, binary):
+    """Player lamps over floor_lamps' points, standing where player starts would, for a level that
+    keeps none."""
+    points = floor_lamps.floor_points(world_triangles(doc, binary), FLOOR_LAMPS)
+    starts = [(x, y + PLAYER_START_HEIGHT, z) for x, y, z in points]
+    return add_player_lamps(doc, starts, f"{len(starts)} points {PLAYER_START_HEIGHT:g} m over its floors, spread as far "
+                                         "apart as they go (it keeps no player starts; floor_lamps.py)")
+
+
+def shared_corpus():
+    """The shared corpus's folder: $RADBAKE_SHARED_CORPUS, else ../shared/corpus beside the project,
+    else beside the repository this one was cloned from (a CI or fresh clone elsewhere); None when
+    none of them is there."""
+    places = [os.environ.get("RADBAKE_SHARED_CORPUS", ""), os.path.join(ROOT, "..", "shared", "corpus")]
+    origin = subprocess.run(["git", "-C", ROOT, "config", "--get", "remote.origin.url"], capture_output=True, text=True)
+    if origin.returncode == 0 and os.path.isdir(origin.stdout.strip()):
+        places.append(os.path.join(origin.stdout.strip(), "..", "shared", "corpus"))
+    return next((os.path.realpath(p) for p in places if p and os.path.isdir(p)), None)
+
+
+def copy_shared(name, source, out):
+    """Copies a shared-corpus scene (a .gltf and the files it names) into `out`, its units scaled to
+    metres by a root node; returns its path, json and buffer."""
+    folder = shared_corpus()
+    if folder is None or not os.path.exists(os.path.join(folder, source)):
+        return None
+    src = os.path.join(folder, source)
+    doc, _ = read_gltf(src)
+    for entry in doc.get("buffers", []) + doc.get("images", []):
+        if "uri" in entry and not entry["uri"].startswith("data:"):
+            shutil.copy(os.path.join(os.path.dirname(src), entry["uri"]), out)
+    scene = doc["scenes"][doc.get("scene", 0)]
+    unit = SHARED_UNIT_M[name]
+    doc["nodes"].append({"name": f"{name} units to metres", "scale": [unit] * 3, "children": scene["nodes"]})
+    scene["nodes"] = [len(doc["nodes"]) - 1]
+    with open(os.path.join(out, doc["buffers"][0]["uri"]), "rb") as f:
+        binary = f.read()
+    return os.path.join(out, name + ".gltf"), doc, binary
 
 
 def add_light(doc, kind):
@@ -196,6 +285,16 @@ def make(name, source, light, folder):
     shutil.rmtree(out, ignore_errors=True)
     os.makedirs(out)
     src, starts = os.path.join(MODELS, source), []
+    if source.startswith("shared:"):
+        copied = copy_shared(name, source.split(":")[1], out)
+        if copied is None:
+            shutil.rmtree(out)
+            return None
+        path, doc, binary = copied
+        said, bounds = add_floor_lamps(doc, binary)
+        with open(path, "w") as f:
+            json.dump(doc, f, indent=1)
+        return path, said, bounds, f"copied from the shared corpus, {SHARED_UNIT_M[name]:g} m a unit"
     if source.startswith("openarena:"):
         src, starts = quake3_map.convert(source.split(":")[1], os.path.join(out, "map"),
                                          [os.path.join(OPENARENA, p) for p in OPENARENA_PK3S])
@@ -232,11 +331,18 @@ def main():
         sys.exit(__doc__)
     folder = os.path.abspath(sys.argv[1])
     os.makedirs(folder, exist_ok=True)
-    manifest = []
+    manifest, missing = [], []
     for name, (kind, source, light) in SCENES.items():
-        path, said, bounds, how = make(name, source, light, folder)
+        made = make(name, source, light, folder)
+        if made is None:
+            missing.append(name)
+            print(f"make_corpus: {name} left out: no shared corpus holds {source.split(':')[1]} "
+                  "(../shared/corpus beside the project or its origin, or $RADBAKE_SHARED_CORPUS)")
+            continue
+        path, said, bounds, how = made
         origin = ("openarena (openarena-088-data, openarena-081-textures): maps/" + source.split(":")[1] + ".bsp"
-                  if source.startswith("openarena:") else "assimp-testmodels: " + source)
+                  if source.startswith("openarena:") else "the shared corpus: " + source.split(":")[1]
+                  if source.startswith("shared:") else "assimp-testmodels: " + source)
         entry = {"name": name, "kind": kind, "file": os.path.relpath(path, folder),
                  "source": origin, "made": how, "light_added": said, "bounds_m": bounds}
         if name in EXTERIOR:
@@ -246,7 +352,7 @@ def main():
             entry["walls_bounds_m"] = {"min": lo, "max": hi}
         manifest.append(entry)
     with open(os.path.join(folder, "corpus.json"), "w") as f:
-        json.dump({"scenes": manifest}, f, indent=1)
+        json.dump({"scenes": manifest, "missing": missing}, f, indent=1)
     print(f"make_corpus: {len(manifest)} scenes in {folder}")
 
 
