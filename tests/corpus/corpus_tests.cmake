@@ -30,3 +30,14 @@ add_test(NAME corpus.surfaces.fzk_haus
   COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/corpus/interior_surfaces.py $<TARGET_FILE:radbake>
           ${RADBAKE_CORPUS_DIR} ${RADBAKE_CORPUS_BAKES} ${CMAKE_CURRENT_SOURCE_DIR}/fixtures/fzk_haus_surfaces_reference.csv)
 set_tests_properties(corpus.surfaces.fzk_haus PROPERTIES FIXTURES_REQUIRED corpus_scenes LABELS "slow;corpus" COST 100 TIMEOUT ${timeout_600})
+# Each scene's surfaces against its stored path-traced reference (tests/corpus/scene_surfaces.py:
+# production within 3% on each lit surface of 1 m2 or more and 1% on their mean |bias|, the
+# defaults within 5% and 2%). The scenes that meet those bounds; the others' figures, and what holds
+# them back, are on docs/bench/real.md (the house is held to its own measured bounds above).
+foreach(scene teapots milk_truck)
+  add_test(NAME corpus.surfaces.${scene}
+    COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/corpus/scene_surfaces.py $<TARGET_FILE:radbake>
+            ${RADBAKE_CORPUS_DIR} ${RADBAKE_CORPUS_BAKES} ${scene} ${CMAKE_CURRENT_SOURCE_DIR}/fixtures/${scene}_surfaces_reference.csv)
+  set_tests_properties(corpus.surfaces.${scene} PROPERTIES FIXTURES_REQUIRED "corpus_scenes;corpus_bakes" LABELS "slow;corpus"
+                       TIMEOUT ${timeout_300} SKIP_RETURN_CODE 77)
+endforeach()
