@@ -26,13 +26,20 @@ MOST_BALANCE_ERROR = {"duck": 0.10}
 # ctest's SKIP_RETURN_CODE (tests/corpus/corpus_tests.cmake): a scene of the shared corpus
 # (../shared/corpus) on a machine without it is reported skipped, not passed.
 SKIPPED = 77
-def main():
-    radbake, validator, corpus, name, out = sys.argv[1:6]
+
+
+def corpus_scene(corpus, name):
+    """corpus.json's entry for the scene `name`; a scene listed as missing ends the test skipped."""
     manifest = json.load(open(os.path.join(corpus, "corpus.json")))
     if name in manifest.get("missing", []):
         print(f"{name}: not in the corpus: make_corpus.py found no shared corpus holding it (samples/corpus/README.md)")
         sys.exit(SKIPPED)
-    scene = next(s for s in manifest["scenes"] if s["name"] == name)
+    return next(s for s in manifest["scenes"] if s["name"] == name)
+
+
+def main():
+    radbake, validator, corpus, name, out = sys.argv[1:6]
+    scene = corpus_scene(corpus, name)
     folder = os.path.join(out, name)
     bake = subprocess.run([radbake, "bake", os.path.join(corpus, scene["file"]), "-o", folder, "--quiet"],
                           capture_output=True, text=True)

@@ -18,13 +18,13 @@ import os
 import subprocess
 import sys
 
+from bake_scene import corpus_scene
 from interior_surfaces import keyed, read_reference
 
 # (label, bake options or None for corpus.bake's, bound on each surface, bound on the mean |bias|)
 PRESETS = [("production", ["--quality", "production"], 0.03, 0.01), ("the defaults", None, 0.05, 0.02)]
 SMALLEST_M2 = 1.0
 LIT_SHARE = 0.01
-SKIPPED = 77  # as bake_scene.py's
 
 
 def held(label, report, reference, surface_bound, mean_bound):
@@ -60,11 +60,7 @@ def held(label, report, reference, surface_bound, mean_bound):
 
 def main():
     radbake, corpus, out, name, reference_csv = sys.argv[1:6]
-    manifest = json.load(open(os.path.join(corpus, "corpus.json")))
-    if name in manifest.get("missing", []):
-        print(f"{name}: not in the corpus: make_corpus.py found no shared corpus holding it (samples/corpus/README.md)")
-        sys.exit(SKIPPED)
-    scene = next(s for s in manifest["scenes"] if s["name"] == name)
+    scene = corpus_scene(corpus, name)
     reference = read_reference(reference_csv)
     failures = []
     for label, options, surface_bound, mean_bound in PRESETS:
