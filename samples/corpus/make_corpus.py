@@ -239,6 +239,9 @@ def copy_shared(name, source, out):
     doc, _ = read_gltf(src)
     for entry in doc.get("buffers", []) + doc.get("images", []):
         if "uri" in entry and not entry["uri"].startswith("data:"):
+            # A file beside the scene, by its plain name: nothing the file names is read from elsewhere.
+            if os.path.basename(entry["uri"]) != entry["uri"] or entry["uri"] in ("", ".", ".."):
+                sys.exit(f"make_corpus: {src}: names {entry['uri']!r}, not a file beside it")
             shutil.copy(os.path.join(os.path.dirname(src), entry["uri"]), out)
     scene = doc["scenes"][doc.get("scene", 0)]
     unit = SHARED_UNIT_M[name]
